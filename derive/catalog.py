@@ -41,7 +41,7 @@ def _describe(row: dict) -> str:
 
 def _symbol(name: str) -> sp.Symbol:
     """The symbol of a parameter or an input: derive/symbols.py's (with its assumptions)."""
-    return getattr(symbols, name)
+    return getattr(symbols, name, None) or sym(name)
 
 
 #: SLIP parameters (report Table 1) as kernel arguments, by name: the rows of :mod:`.params`, and
@@ -128,6 +128,12 @@ APEX_RETURN = Group(
             "foot_y",
             "height of the foot (the touchdown ground) relative to the apex: ground - apex height",
             "m",
+        ),
+        Field(
+            "touchdown_q_th",
+            "leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent",
+            "rad",
+            odd=True,
         ),
     ),
 )

@@ -186,13 +186,11 @@ class MapSpec(Declaration):
             Stage(((direction, sp.sign(v)),), comment="the step's direction: the sign of the apex speed"),
             Call(
                 to_td,
+                # every apex-return input and parameter the flight takes, by name
                 {
-                    "b_y_apex": h,
-                    "b_xd_apex": v,
-                    "q_th_td": catalog.TOUCHDOWN[2].symbol,
-                    "q_r_td": catalog.PARAMS["q_r_td"].symbol,
-                    "g_f": catalog.PARAMS["g_f"].symbol,
-                    "ground": ground,
+                    a.name: a.symbol
+                    for a in (*catalog.APEX_ARGS, *catalog.PARAMS.values())
+                    if a.name in to_td.arg_names
                 },
                 {
                     **dict(zip(to_td.output_names[:4], td, strict=True)),
@@ -223,7 +221,11 @@ class MapSpec(Declaration):
                 comment="liftoff -> next apex: exact ballistic ascent",
             ),
             Stage(
-                ((sym("step_length"), sym("foot_x") + next_apex_x), (sym("foot_y"), ground - h)),
+                (
+                    (sym("step_length"), sym("foot_x") + next_apex_x),
+                    (sym("foot_y"), ground - h),
+                    (sym("touchdown_q_th"), sym(td[2])),
+                ),
                 comment="the step: apex to the foot, the foot to the next apex",
             ),
         )

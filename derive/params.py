@@ -99,4 +99,14 @@ APEX_INPUTS: tuple[dict, ...] = (
         "domain": "real",
         "default": 0.0,
     },
+    {
+        "name": "retraction_rate",
+        "arg": "retraction_rate",
+        "doc": "swing-leg retraction rate: after the apex the leg angle is touchdown_angle + "
+        "retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg "
+        "has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle",
+        "unit": "rad/s",
+        "domain": "real",
+        "default": 0.0,
+    },
 )

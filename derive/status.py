@@ -58,4 +58,10 @@ STATUS_CODES: tuple[tuple[str, int, str], ...] = (
         "the radial momentum p_r of an iterate is imaginary (H^{-1} of (33) or the radial work < 0: the "
         "iterate overshoots the turning point)",
     ),
+    (
+        "NO_TOUCHDOWN",
+        16,
+        "the swinging leg does not meet the ground from above with |q_th| < pi/2 (the retraction rate "
+        "sweeps the foot away from the ground or the leg past the horizontal)",
+    ),
 )

@@ -16,7 +16,7 @@ from numba import njit
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
 from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD,
-    STATUS_LIFTOFF_BACKWARD, STATUS_NUMERICAL_RANGE)
+    STATUS_LIFTOFF_BACKWARD, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_NO_TOUCHDOWN)
 
 NAN = math.nan
 _NAN5 = (NAN,) * 5
@@ -24,8 +24,9 @@ _NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
-def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground):
-    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td).
+def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate):
+    """Ballistic descent from an apex to touchdown with the leg at q_r_td swinging from q_th_td at
+    retraction_rate.
 
     Report equations: sec2.1-touchdown, sec2.2.2.
 
@@ -37,6 +38,10 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground):
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
+        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
+            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
+            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
+            retraction_rate [rad/s]
 
     Returns a tuple:
         touchdown_q_r: leg length [m]
@@ -47,30 +52,68 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground):
         foot_x: horizontal position of the toe at touchdown relative to the apex [m]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 28
+    # Total ops: 58
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and ((b_y_apex >= 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground)
+            and math.isfinite(retraction_rate) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((q_r_td > 0.0)) and ((g_f > 0.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
-    # touchdown height below apex
+    # the foot above the touchdown ground at the apex
     if not ((drop > 0.0)):
         return _NAN6 + (STATUS_APEX_TOO_LOW,)
-    # touchdown state from the derived Cartesian -> polar map
-    _x0 = math.sin(q_th_td)
+    # the descent time of a leg held still (section 2.1)
+    t0 = math.sqrt(2.0)*math.sqrt(drop)/math.sqrt(g_f)
+    # |retraction_rate| <= sqrt(g_f/q_r_td): the foot's height concave in time
+    if not ((q_r_td*retraction_rate**2 <= g_f)):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # a start at or after the touchdown: t0 if the foot is on or below the ground then, else the time the body
+    # is q_r_td below the ground
+    _x0 = 2.0*q_r_td
     _x1 = math.cos(q_th_td)
-    _x2 = math.sqrt(g_f)
-    _x3 = math.sqrt(2.0)
-    _x4 = math.sqrt(drop)
-    _x5 = _x3*_x4
-    _x6 = _x5/_x2
+    _x2 = math.sqrt(_x0*_x1 + _x0 + 2.0*drop)/math.sqrt(g_f)
+    t_far = _x2
+    t_start = ((t0) if (q_r_td*(_x1 - math.cos(q_th_td + retraction_rate*t0)) <= 0.0) else (_x2))
+    # Newton's method on the foot's height (concave: monotone from the right)
+    t_td = t_start
+    touchdown_passes = 0.0
+    _conv0 = False
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(50.0), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and touchdown_passes > 0.0:
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
+        _x3 = (0.5)*g_f
+        foot_slope = (_x3*(t0 - t_td) - _x3*(t0 + t_td) + q_r_td*retraction_rate*math.sin(q_th_td
+            + retraction_rate*t_td))
+        # the foot descends toward the ground
+        if not ((foot_slope < 0.0)):
+            return _NAN6 + (STATUS_NO_TOUCHDOWN,)
+        if _conv0 or _it0 == _last0:
+            break
+        _n0_0 = (t_td - ((0.5)*g_f*(t0 - t_td)*(t0 + t_td) + q_r_td*(math.cos(q_th_td) - math.cos(q_th_td
+            + retraction_rate*t_td)))/foot_slope)
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - t_td) <= 1e-12*(t0))
+        t_td = _n0_0
+        touchdown_passes += 1.0
+    # the leg angle at touchdown
+    touchdown_angle = q_th_td + retraction_rate*t_td
+    # the leg above the horizontal
+    if not ((abs(touchdown_angle) < (0.5)*math.pi)):
+        return _NAN6 + (STATUS_NO_TOUCHDOWN,)
+    # touchdown state from the derived Cartesian -> polar map
+    _x4 = math.sin(touchdown_angle)
+    _x5 = math.cos(touchdown_angle)
     touchdown_q_r = q_r_td
-    touchdown_q_rd = -_x0*b_xd_apex - _x1*_x2*_x5
-    touchdown_q_th = q_th_td
-    touchdown_q_thd = (_x0*_x2*_x3*_x4 - _x1*b_xd_apex)/q_r_td
-    t_flight = _x6
-    foot_x = _x0*q_r_td + _x6*b_xd_apex
+    touchdown_q_rd = -_x4*b_xd_apex - _x5*g_f*t_td
+    touchdown_q_th = touchdown_angle
+    touchdown_q_thd = (_x4*g_f*t_td - _x5*b_xd_apex)/q_r_td
+    t_flight = t_td
+    foot_x = _x4*q_r_td + b_xd_apex*t_td
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th)
             and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(foot_x)):

@@ -21,16 +21,17 @@ from .support import fail, finite, stack
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
 from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD,
-    STATUS_LIFTOFF_BACKWARD)
+    STATUS_LIFTOFF_BACKWARD, STATUS_NOT_CONVERGED, STATUS_NO_TOUCHDOWN)
 
 NAN = math.nan
 
 
 @njit(cache=True, error_model="numpy")
-def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground,
-        out):
-    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), and the derivatives
-    of its outputs with respect to b_y_apex, b_xd_apex, q_th_td, ground.
+def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex, q_th_td,
+        q_r_td, g_f, ground, retraction_rate, out):
+    """Ballistic descent from an apex to touchdown with the leg at q_r_td swinging from q_th_td at
+    retraction_rate, and the derivatives of its outputs with respect to b_y_apex, b_xd_apex, q_th_td, ground,
+    retraction_rate.
 
     Report equations: sec2.1-touchdown, sec2.2.2.
 
@@ -45,6 +46,10 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
+        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
+            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
+            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
+            retraction_rate [rad/s]
 
     Writes into out:
         touchdown_q_r: leg length [m]
@@ -54,72 +59,173 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
         t_flight: time from the apex to touchdown [s]
         foot_x: horizontal position of the toe at touchdown relative to the apex [m]
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground (row-major)
+            q_th_td, ground, retraction_rate (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 59
+    # Total ops: 199
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and ((b_y_apex >= 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground)
+            and math.isfinite(retraction_rate) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((q_r_td > 0.0)) and ((g_f > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
     d_drop__q_th_td = q_r_td*math.sin(q_th_td)
-    # touchdown height below apex
+    # the foot above the touchdown ground at the apex
     if not ((drop > 0.0)):
         return fail(out, STATUS_APEX_TOO_LOW)
+    # the descent time of a leg held still (section 2.1)
+    _x0 = math.sqrt(drop)
+    _x1 = math.sqrt(2.0)/math.sqrt(g_f)
+    t0 = _x0*_x1
+    _pd__0 = (0.5)*_x1/_x0
+    d_t0__q_th_td = _pd__0*d_drop__q_th_td
+    # |retraction_rate| <= sqrt(g_f/q_r_td): the foot's height concave in time
+    if not ((q_r_td*retraction_rate**2 <= g_f)):
+        return fail(out, STATUS_INVALID_INPUT)
+    # a start at or after the touchdown: t0 if the foot is on or below the ground then, else the time the body
+    # is q_r_td below the ground
+    _x2 = (1.0/math.sqrt(g_f))
+    _x3 = 2.0*q_r_td
+    _x4 = math.cos(q_th_td)
+    _x5 = math.sqrt(_x3*_x4 + _x3 + 2.0*drop)
+    _x6 = _x2*_x5
+    t_far = _x6
+    _x7 = _x2/_x5
+    _pd__1 = _x7
+    d_t_far__q_th_td = _pd__1*d_drop__q_th_td - _x7*q_r_td*math.sin(q_th_td)
+    _x8 = (q_r_td*(_x4 - math.cos(q_th_td + retraction_rate*t0)) <= 0.0)
+    t_start = ((t0) if _x8 else (_x6))
+    _pd__2 = ((1.0) if _x8 else (0.0))
+    _pd__3 = ((0.0) if _x8 else (1.0))
+    _x9 = _pd__0*_pd__2 + _pd__1*_pd__3
+    d_t_start__b_y_apex = _x9
+    d_t_start__q_th_td = _pd__2*d_t0__q_th_td + _pd__3*d_t_far__q_th_td
+    d_t_start__ground = -_x9
+    # Newton's method on the foot's height (concave: monotone from the right)
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (t_start, d_t_start__b_y_apex, d_t_start__q_th_td, d_t_start__ground, 0.0, )
+    _pk0 = _pki0
+    touchdown_passes = 0.0
+    _conv0 = False
+    _last0 = max(int(50.0), 0)
+    for _it0 in range(_last0 + 1):
+        (t_td, d_t_td__b_y_apex, d_t_td__q_th_td, d_t_td__ground, d_t_td__retraction_rate, ) = _pk0
+        if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and touchdown_passes > 0.0:
+            return fail(out, STATUS_NOT_CONVERGED)
+        _x10 = (0.5)*g_f
+        _x11 = retraction_rate*t_td
+        _x12 = _x11 + q_th_td
+        _x13 = q_r_td*math.sin(_x12)
+        foot_slope = _x10*(t0 - t_td) - _x10*(t0 + t_td) + _x13*retraction_rate
+        _x14 = math.cos(_x12)
+        _pd__4 = _x14*q_r_td*retraction_rate**2 - g_f
+        d_foot_slope__b_y_apex = _pd__4*d_t_td__b_y_apex
+        _x15 = _x14*q_r_td
+        d_foot_slope__q_th_td = _pd__4*d_t_td__q_th_td + _x15*retraction_rate
+        d_foot_slope__ground = _pd__4*d_t_td__ground
+        d_foot_slope__retraction_rate = _pd__4*d_t_td__retraction_rate + _x11*_x15 + _x13
+        # the foot descends toward the ground
+        if not ((foot_slope < 0.0)):
+            return fail(out, STATUS_NO_TOUCHDOWN)
+        if _conv0 or _it0 == _last0:
+            break
+        # next values
+        _x16 = (1.0/foot_slope)
+        _x17 = t0 - t_td
+        _x18 = (0.5)*g_f
+        _x19 = _x18*(t0 + t_td)
+        _x20 = q_th_td + retraction_rate*t_td
+        _x21 = _x17*_x19 + q_r_td*(-math.cos(_x20) + math.cos(q_th_td))
+        t_td__next = -_x16*_x21 + t_td
+        _pd__5 = _x16**2*_x21
+        _x22 = _x17*_x18
+        _pd__6 = -_x16*(_x19 + _x22)
+        _x23 = math.sin(_x20)
+        _x24 = _x23*q_r_td
+        _pd__7 = -_x16*(-_x19 + _x22 + _x24*retraction_rate) + 1.0
+        _x25 = _pd__0*_pd__6
+        d_t_td__next__b_y_apex = _pd__5*d_foot_slope__b_y_apex + _pd__7*d_t_td__b_y_apex + _x25
+        d_t_td__next__q_th_td = (_pd__5*d_foot_slope__q_th_td + _pd__6*d_t0__q_th_td + _pd__7*d_t_td__q_th_td
+            - _x16*q_r_td*(_x23 - math.sin(q_th_td)))
+        d_t_td__next__ground = _pd__5*d_foot_slope__ground + _pd__7*d_t_td__ground - _x25
+        d_t_td__next__retraction_rate = (_pd__5*d_foot_slope__retraction_rate + _pd__7*d_t_td__retraction_rate
+            - _x16*_x24*t_td)
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = 1e-12 > 0.0 and (abs(t_td__next - t_td) <= 1e-12*(t0))
+        _pkn0 = (t_td__next, d_t_td__next__b_y_apex, d_t_td__next__q_th_td, d_t_td__next__ground,
+            d_t_td__next__retraction_rate, )
+        _pk0 = _pkn0
+        touchdown_passes += 1.0
+    # the leg angle at touchdown
+    touchdown_angle = q_th_td + retraction_rate*t_td
+    d_touchdown_angle__b_y_apex = d_t_td__b_y_apex*retraction_rate
+    d_touchdown_angle__q_th_td = d_t_td__q_th_td*retraction_rate + 1.0
+    d_touchdown_angle__ground = d_t_td__ground*retraction_rate
+    d_touchdown_angle__retraction_rate = d_t_td__retraction_rate*retraction_rate + t_td
+    # the leg above the horizontal
+    if not ((abs(touchdown_angle) < (0.5)*math.pi)):
+        return fail(out, STATUS_NO_TOUCHDOWN)
     # touchdown state from the derived Cartesian -> polar map
     touchdown_q_r = q_r_td
-    _x0 = math.sin(q_th_td)
-    _x1 = math.cos(q_th_td)
-    _x2 = math.sqrt(g_f)
-    _x3 = math.sqrt(2.0)
-    _x4 = math.sqrt(drop)
-    _x5 = _x3*_x4
-    _x6 = _x2*_x5
-    _x7 = _x0*b_xd_apex + _x1*_x6
-    touchdown_q_rd = -_x7
-    _x8 = (0.5)*_x3/_x4
-    _x9 = _x2*_x8
-    _pd__0 = -_x1*_x9
-    d_touchdown_q_rd__b_xd_apex = -_x0
-    _x10 = _x1*b_xd_apex
-    d_touchdown_q_rd__q_th_td = _pd__0*d_drop__q_th_td + _x0*_x6 - _x10
-    touchdown_q_th = q_th_td
-    _x11 = (1.0/q_r_td)
-    touchdown_q_thd = _x11*(_x0*_x2*_x3*_x4 - _x10)
-    _pd__1 = _x0*_x11*_x9
-    d_touchdown_q_thd__b_xd_apex = -_x1*_x11
-    d_touchdown_q_thd__q_th_td = _pd__1*d_drop__q_th_td + _x11*_x7
-    _x12 = (1.0/_x2)
-    _x13 = _x12*_x5
-    t_flight = _x13
-    _x14 = _x12*_x8
-    _pd__2 = _x14
-    d_t_flight__q_th_td = _pd__2*d_drop__q_th_td
-    foot_x = _x0*q_r_td + _x13*b_xd_apex
-    _pd__3 = _x14*b_xd_apex
-    d_foot_x__b_xd_apex = _x13
-    d_foot_x__q_th_td = _pd__3*d_drop__q_th_td + _x1*q_r_td
+    _x26 = math.sin(touchdown_angle)
+    _x27 = math.cos(touchdown_angle)
+    _x28 = _x27*g_f
+    _x29 = _x26*b_xd_apex + _x28*t_td
+    touchdown_q_rd = -_x29
+    _pd__8 = -_x28
+    _x30 = _x26*g_f*t_td - _x27*b_xd_apex
+    _pd__9 = _x30
+    d_touchdown_q_rd__b_y_apex = _pd__8*d_t_td__b_y_apex + _pd__9*d_touchdown_angle__b_y_apex
+    d_touchdown_q_rd__b_xd_apex = -_x26
+    d_touchdown_q_rd__q_th_td = _pd__8*d_t_td__q_th_td + _pd__9*d_touchdown_angle__q_th_td
+    d_touchdown_q_rd__ground = _pd__8*d_t_td__ground + _pd__9*d_touchdown_angle__ground
+    d_touchdown_q_rd__retraction_rate = (_pd__8*d_t_td__retraction_rate
+        + _pd__9*d_touchdown_angle__retraction_rate)
+    touchdown_q_th = touchdown_angle
+    _x31 = (1.0/q_r_td)
+    touchdown_q_thd = _x30*_x31
+    _pd__10 = _x26*_x31*g_f
+    _pd__11 = _x29*_x31
+    d_touchdown_q_thd__b_y_apex = _pd__10*d_t_td__b_y_apex + _pd__11*d_touchdown_angle__b_y_apex
+    d_touchdown_q_thd__b_xd_apex = -_x27*_x31
+    d_touchdown_q_thd__q_th_td = _pd__10*d_t_td__q_th_td + _pd__11*d_touchdown_angle__q_th_td
+    d_touchdown_q_thd__ground = _pd__10*d_t_td__ground + _pd__11*d_touchdown_angle__ground
+    d_touchdown_q_thd__retraction_rate = (_pd__10*d_t_td__retraction_rate
+        + _pd__11*d_touchdown_angle__retraction_rate)
+    t_flight = t_td
+    foot_x = _x26*q_r_td + b_xd_apex*t_td
+    _pd__12 = _x27*q_r_td
+    d_foot_x__b_y_apex = _pd__12*d_touchdown_angle__b_y_apex + b_xd_apex*d_t_td__b_y_apex
+    d_foot_x__q_th_td = _pd__12*d_touchdown_angle__q_th_td + b_xd_apex*d_t_td__q_th_td
+    d_foot_x__ground = _pd__12*d_touchdown_angle__ground + b_xd_apex*d_t_td__ground
+    d_foot_x__retraction_rate = _pd__12*d_touchdown_angle__retraction_rate + b_xd_apex*d_t_td__retraction_rate
     # derivatives of the outputs
-    d_touchdown_q_rd__b_y_apex = _pd__0
-    d_touchdown_q_rd__ground = -_pd__0
-    d_touchdown_q_thd__b_y_apex = _pd__1
-    d_touchdown_q_thd__ground = -_pd__1
-    d_t_flight__b_y_apex = _pd__2
-    d_t_flight__ground = -_pd__2
-    d_foot_x__b_y_apex = _pd__3
-    d_foot_x__ground = -_pd__3
+    d_touchdown_q_th__b_y_apex = d_touchdown_angle__b_y_apex
+    d_touchdown_q_th__q_th_td = d_touchdown_angle__q_th_td
+    d_touchdown_q_th__ground = d_touchdown_angle__ground
+    d_touchdown_q_th__retraction_rate = d_touchdown_angle__retraction_rate
+    d_t_flight__b_y_apex = d_t_td__b_y_apex
+    d_t_flight__q_th_td = d_t_td__q_th_td
+    d_t_flight__ground = d_t_td__ground
+    d_t_flight__retraction_rate = d_t_td__retraction_rate
+    d_foot_x__b_xd_apex = t_td
     # (internal helper: its callers check that their outputs are finite)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29],) = (touchdown_q_r, touchdown_q_rd,
-        touchdown_q_th, touchdown_q_thd, t_flight, foot_x, 0.0, 0.0, 0.0, 0.0, d_touchdown_q_rd__b_y_apex,
-        d_touchdown_q_rd__b_xd_apex, d_touchdown_q_rd__q_th_td, d_touchdown_q_rd__ground, 0.0, 0.0, 1.0, 0.0,
-        d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td,
-        d_touchdown_q_thd__ground, d_t_flight__b_y_apex, 0.0, d_t_flight__q_th_td, d_t_flight__ground,
-        d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,)
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35],) = (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight,
+        foot_x, 0.0, 0.0, 0.0, 0.0, 0.0, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex,
+        d_touchdown_q_rd__q_th_td, d_touchdown_q_rd__ground, d_touchdown_q_rd__retraction_rate,
+        d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
+        d_touchdown_q_th__retraction_rate, d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex,
+        d_touchdown_q_thd__q_th_td, d_touchdown_q_thd__ground, d_touchdown_q_thd__retraction_rate,
+        d_t_flight__b_y_apex, 0.0, d_t_flight__q_th_td, d_t_flight__ground, d_t_flight__retraction_rate,
+        d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,
+        d_foot_x__retraction_rate,)
     return STATUS_OK
 
 

@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c8466d021d7dd8ec
+#   flight.py sha256:456f9ff51de745b4
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
 kernels."""
@@ -351,7 +351,7 @@ def geyer_apex_return(x, p, out):
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
 
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo); writes the outputs below into out, in order, and returns
     the status (out all NaN unless OK).
 
@@ -362,6 +362,10 @@ def geyer_apex_return(x, p, out):
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
+        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
+            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
+            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
+            retraction_rate [rad/s]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -383,24 +387,26 @@ def geyer_apex_return(x, p, out):
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
+            [rad]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k, g_s, g_f, q_r_td, q_r_lo) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
-            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f)
+            and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -431,9 +437,10 @@ def geyer_apex_return(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

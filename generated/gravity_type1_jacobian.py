@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight_jacobian.py sha256:ca85a70881dc80e6
-#   geyer_jacobian.py sha256:2b212fb80a417ed7
+#   flight_jacobian.py sha256:6429d69e2f546b98
+#   geyer_jacobian.py sha256:6b07777bdd6be39d
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type1: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -19,7 +19,7 @@ import numpy as np
 from numba import carray, njit
 
 from .support import fail, finite, stack
-from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
 
@@ -577,7 +577,7 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol); writes the outputs below into
     out, in order, and returns
     the status (out all NaN unless OK).
@@ -589,6 +589,10 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
+        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
+            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
+            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
+            retraction_rate [rad/s]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -616,57 +620,68 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
+            [rad]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k (row-major)
+            q_th_td, ground, retraction_rate, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 178
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    # Total ops: 244
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol) = (p[0], p[1], p[2], p[3], p[4],
         p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
-            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading
-            == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0))
-            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
-            and ((tol >= 0.0) and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f)
+            and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
+            and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples
+            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
+    td_q_th = _o0[2]
     foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
+    _j_td_q_rd__b_y_apex = _o0[11]
+    _j_td_q_rd__b_xd_apex = _o0[12]
+    _j_td_q_rd__q_th_td = _o0[13]
+    _j_td_q_rd__ground = _o0[14]
+    _j_td_q_rd__retraction_rate = _o0[15]
+    _j_td_q_th__b_y_apex = _o0[16]
+    _j_td_q_th__q_th_td = _o0[18]
+    _j_td_q_th__ground = _o0[19]
+    _j_td_q_th__retraction_rate = _o0[20]
+    _j_td_q_thd__b_y_apex = _o0[21]
+    _j_td_q_thd__b_xd_apex = _o0[22]
+    _j_td_q_thd__q_th_td = _o0[23]
+    _j_td_q_thd__ground = _o0[24]
+    _j_td_q_thd__retraction_rate = _o0[25]
+    _j_t_descent__b_y_apex = _o0[26]
+    _j_t_descent__q_th_td = _o0[28]
+    _j_t_descent__ground = _o0[29]
+    _j_t_descent__retraction_rate = _o0[30]
+    _j_foot_x__b_y_apex = _o0[31]
+    _j_foot_x__b_xd_apex = _o0[32]
+    _j_foot_x__q_th_td = _o0[33]
+    _j_foot_x__ground = _o0[34]
+    _j_foot_x__retraction_rate = _o0[35]
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], td_q_th, _o0[3],)
     _o1 = carray(stack(72), 72)
     _c1 = gravity_type1_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -697,41 +712,58 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     _j_P_c__k = _o1[66]
     # chain rule through gravity_type1_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_t_stance__q_th_td*_j_td_q_th__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
     d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
         + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
+    d_t_stance__ground = (_j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_th_td*_j_td_q_th__ground
+        + _j_t_stance__q_thd_td*_j_td_q_thd__ground)
+    d_t_stance__retraction_rate = (_j_t_stance__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_t_stance__q_th_td*_j_td_q_th__retraction_rate
+        + _j_t_stance__q_thd_td*_j_td_q_thd__retraction_rate)
     d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__b_y_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
     d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
         + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
     d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__ground + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_rd__retraction_rate = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__retraction_rate
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__retraction_rate)
     d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__b_y_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
     d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
         + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
     d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__ground + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_th__retraction_rate = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__retraction_rate
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__retraction_rate)
     d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__b_y_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
     d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
         + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
     d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    d_P_c__b_y_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_y_apex
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__ground + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_thd__retraction_rate = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__retraction_rate
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__retraction_rate)
+    d_P_c__b_y_apex = (_j_P_c__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c__q_th_td*_j_td_q_th__b_y_apex
+        + _j_P_c__q_thd_td*_j_td_q_thd__b_y_apex)
     d_P_c__b_xd_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_xd_apex
     d_P_c__q_th_td = (_j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td
         + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
-    d_P_c__ground = _j_P_c__q_rd_td*_j_td_q_rd__ground + _j_P_c__q_thd_td*_j_td_q_thd__ground
+    d_P_c__ground = (_j_P_c__q_rd_td*_j_td_q_rd__ground + _j_P_c__q_th_td*_j_td_q_th__ground
+        + _j_P_c__q_thd_td*_j_td_q_thd__ground)
+    d_P_c__retraction_rate = (_j_P_c__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_P_c__q_th_td*_j_td_q_th__retraction_rate + _j_P_c__q_thd_td*_j_td_q_thd__retraction_rate)
     # liftoff -> next apex: exact ballistic ascent
     _o2 = carray(stack(20), 20)
     _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
@@ -760,6 +792,9 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
     d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
         + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
+    d_apex_height__retraction_rate = (_j_apex_height__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_apex_height__q_th*d_liftoff_q_th__retraction_rate
+        + _j_apex_height__q_thd*d_liftoff_q_thd__retraction_rate)
     d_apex_height__k = (_j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k
         + _j_apex_height__q_thd*_j_liftoff_q_thd__k)
     d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
@@ -770,6 +805,9 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
     d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
         + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
+    d_apex_speed__retraction_rate = (_j_apex_speed__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_apex_speed__q_th*d_liftoff_q_th__retraction_rate
+        + _j_apex_speed__q_thd*d_liftoff_q_thd__retraction_rate)
     d_apex_speed__k = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k
         + _j_apex_speed__q_thd*_j_liftoff_q_thd__k)
     d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
@@ -780,6 +818,9 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
     d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
         + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
+    d_t_ascent__retraction_rate = (_j_t_ascent__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_t_ascent__q_th*d_liftoff_q_th__retraction_rate
+        + _j_t_ascent__q_thd*d_liftoff_q_thd__retraction_rate)
     d_t_ascent__k = (_j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th
         + _j_liftoff_q_thd__k*_j_t_ascent__q_thd)
     d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
@@ -790,6 +831,9 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
     d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
         + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
+    d_next_apex_x__retraction_rate = (_j_next_apex_x__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_next_apex_x__q_th*d_liftoff_q_th__retraction_rate
+        + _j_next_apex_x__q_thd*d_liftoff_q_thd__retraction_rate)
     d_next_apex_x__k = (_j_liftoff_q_rd__k*_j_next_apex_x__q_rd + _j_liftoff_q_th__k*_j_next_apex_x__q_th
         + _j_liftoff_q_thd__k*_j_next_apex_x__q_thd)
     # the step: apex to the foot, the foot to the next apex
@@ -798,11 +842,14 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
     d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
     d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
+    d_step_length__retraction_rate = _j_foot_x__retraction_rate + d_next_apex_x__retraction_rate
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
     d_t_descent__q_th_td = _j_t_descent__q_th_td
     d_t_descent__ground = _j_t_descent__ground
+    d_t_descent__retraction_rate = _j_t_descent__retraction_rate
     d_t_stance__k = _j_t_stance__k
     d_liftoff_q_rd__k = _j_liftoff_q_rd__k
     d_liftoff_q_th__k = _j_liftoff_q_th__k
@@ -812,6 +859,11 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
     d_foot_x__q_th_td = _j_foot_x__q_th_td
     d_foot_x__ground = _j_foot_x__ground
+    d_foot_x__retraction_rate = _j_foot_x__retraction_rate
+    d_touchdown_q_th__b_y_apex = _j_td_q_th__b_y_apex
+    d_touchdown_q_th__q_th_td = _j_td_q_th__q_th_td
+    d_touchdown_q_th__ground = _j_td_q_th__ground
+    d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     d_P_c__k = _j_P_c__k
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
@@ -820,21 +872,29 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
         out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
         out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76], out[77],
-        out[78], out[79], out[80], out[81], out[82], out[83],) = (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2],
-        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10], _o1[11],
-        d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
-        d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-        d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td,
-        d_t_descent__ground, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
-        d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
-        d_t_ascent__ground, d_t_ascent__k, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
+        out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
+        out[89], out[90], out[91], out[92], out[93], out[94], out[95], out[96], out[97], out[98], out[99],
+        out[100], out[101], out[102], out[103], out[104],) = (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2],
+        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,
+        _o1[10], _o1[11], d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
+        d_apex_height__ground, d_apex_height__retraction_rate, d_apex_height__k, d_apex_speed__b_y_apex,
+        d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__retraction_rate,
+        d_apex_speed__k, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground,
+        d_t_descent__retraction_rate, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+        d_t_stance__ground, d_t_stance__retraction_rate, d_t_stance__k, d_t_ascent__b_y_apex,
+        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__retraction_rate,
+        d_t_ascent__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex,
+        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k,
         d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
-        d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
-        d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
-        d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0,
-        d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0,)
+        d_liftoff_q_th__retraction_rate, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground,
+        d_liftoff_q_thd__retraction_rate, d_liftoff_q_thd__k, d_step_length__b_y_apex,
+        d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground,
+        d_step_length__retraction_rate, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
+        d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+        d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
+        d_touchdown_q_th__retraction_rate, 0.0, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td,
+        d_P_c__ground, d_P_c__retraction_rate, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

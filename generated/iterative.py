@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:caaa594dd2a4e99a
-#   geyer_vs.py sha256:083f4e79a9d597a8
-#   gravity_type0.py sha256:48f9e2c74b125b9b
-#   gravity_type1.py sha256:9312d42b8548e805
-#   gravity_type2.py sha256:2870da2fec148d61
-#   gravity_type3.py sha256:6c299a7bffcc2197
-#   gravity_type4.py sha256:78a8ace9d2aef2ce
-#   gravity_type5.py sha256:f0af2779ab7a22f1
+#   flight.py sha256:456f9ff51de745b4
+#   geyer.py sha256:cdeacb261ab77e9d
+#   geyer_vs.py sha256:3eb3efab7f354993
+#   gravity_type0.py sha256:d6fc51e4fdd6f299
+#   gravity_type1.py sha256:81616b3729716d73
+#   gravity_type2.py sha256:736e48f25e557401
+#   gravity_type3.py sha256:ee47a7f7ff99ead3
+#   gravity_type4.py sha256:6b5b8e8326a9194a
+#   gravity_type5.py sha256:523a0ec45a016e46
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -755,7 +755,7 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
     out, in order, and returns
     the status (out all NaN unless OK).
@@ -767,6 +767,10 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
+        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
+            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
+            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
+            retraction_rate [rad/s]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
@@ -794,30 +798,32 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
+            [rad]
         passes: Picard passes run (the larger of the two halves) [1]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -848,9 +854,10 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -950,25 +957,25 @@ def iterative_apex_return_zeroth_held(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -999,9 +1006,10 @@ def iterative_apex_return_zeroth_held(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1101,25 +1109,25 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1150,9 +1158,10 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1252,25 +1261,25 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1301,9 +1310,10 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1403,25 +1413,25 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1452,9 +1462,10 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1554,25 +1565,25 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1603,9 +1614,10 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1705,25 +1717,25 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1754,9 +1766,10 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1856,25 +1869,25 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1905,9 +1918,10 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2007,25 +2021,25 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -2056,9 +2070,10 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10],)
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -7,16 +7,16 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:caaa594dd2a4e99a
-#   geyer_vs.py sha256:083f4e79a9d597a8
-#   gravity_type0.py sha256:48f9e2c74b125b9b
-#   gravity_type1.py sha256:9312d42b8548e805
-#   gravity_type2.py sha256:2870da2fec148d61
-#   gravity_type3.py sha256:6c299a7bffcc2197
-#   gravity_type4.py sha256:78a8ace9d2aef2ce
-#   gravity_type5.py sha256:f0af2779ab7a22f1
-#   iterative.py sha256:5d15c297562fa6ba
+#   flight.py sha256:456f9ff51de745b4
+#   geyer.py sha256:cdeacb261ab77e9d
+#   geyer_vs.py sha256:3eb3efab7f354993
+#   gravity_type0.py sha256:d6fc51e4fdd6f299
+#   gravity_type1.py sha256:81616b3729716d73
+#   gravity_type2.py sha256:736e48f25e557401
+#   gravity_type3.py sha256:ee47a7f7ff99ead3
+#   gravity_type4.py sha256:6b5b8e8326a9194a
+#   gravity_type5.py sha256:523a0ec45a016e46
+#   iterative.py sha256:d82b1f5bbebb71fb
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -473,7 +473,7 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
     below into out, in order, and returns
     the status (out all NaN unless OK).
@@ -485,6 +485,10 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
+        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
+            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
+            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
+            retraction_rate [rad/s]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
@@ -511,29 +515,31 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
+            [rad]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -564,9 +570,10 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -667,25 +674,25 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -716,9 +723,10 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -820,25 +828,25 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -869,9 +877,10 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -973,25 +982,25 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1022,9 +1031,10 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1126,25 +1136,25 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1175,9 +1185,10 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1279,25 +1290,25 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1328,9 +1339,10 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1432,25 +1444,25 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1481,9 +1493,10 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1585,25 +1598,25 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1634,9 +1647,10 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1738,25 +1752,25 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     td_q_r = _c0[0]
@@ -1787,9 +1801,10 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y,)
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

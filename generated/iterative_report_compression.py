@@ -7,16 +7,16 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   geyer.py sha256:caaa594dd2a4e99a
-#   geyer_vs.py sha256:083f4e79a9d597a8
-#   gravity_type0.py sha256:48f9e2c74b125b9b
-#   gravity_type1.py sha256:9312d42b8548e805
-#   gravity_type2.py sha256:2870da2fec148d61
-#   gravity_type3.py sha256:6c299a7bffcc2197
-#   gravity_type4.py sha256:78a8ace9d2aef2ce
-#   gravity_type5.py sha256:f0af2779ab7a22f1
-#   iterative.py sha256:5d15c297562fa6ba
-#   iterative_report.py sha256:092c9918552f2101
+#   geyer.py sha256:cdeacb261ab77e9d
+#   geyer_vs.py sha256:3eb3efab7f354993
+#   gravity_type0.py sha256:d6fc51e4fdd6f299
+#   gravity_type1.py sha256:81616b3729716d73
+#   gravity_type2.py sha256:736e48f25e557401
+#   gravity_type3.py sha256:ee47a7f7ff99ead3
+#   gravity_type4.py sha256:6b5b8e8326a9194a
+#   gravity_type5.py sha256:523a0ec45a016e46
+#   iterative.py sha256:d82b1f5bbebb71fb
+#   iterative_report.py sha256:5ea5c02a79accf22
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""

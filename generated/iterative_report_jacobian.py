@@ -7,16 +7,16 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight_jacobian.py sha256:ca85a70881dc80e6
-#   geyer_jacobian.py sha256:2b212fb80a417ed7
-#   geyer_vs_jacobian.py sha256:b714100afbf6ef71
-#   gravity_type0_jacobian.py sha256:d17d011ce55cfb35
-#   gravity_type1_jacobian.py sha256:76da5d750d466103
-#   gravity_type2_jacobian.py sha256:c0d8dc3526315529
-#   gravity_type3_jacobian.py sha256:b6ee937e6eb7580e
-#   gravity_type4_jacobian.py sha256:4d8527bb3f9a9320
-#   gravity_type5_jacobian.py sha256:3274b0353ed302fb
-#   iterative_jacobian.py sha256:0b066bd0eadb6d53
+#   flight_jacobian.py sha256:6429d69e2f546b98
+#   geyer_jacobian.py sha256:6b07777bdd6be39d
+#   geyer_vs_jacobian.py sha256:b676b5809e002a48
+#   gravity_type0_jacobian.py sha256:a803d7949f643b91
+#   gravity_type1_jacobian.py sha256:364a82369b21bfea
+#   gravity_type2_jacobian.py sha256:8da856ff8d915a30
+#   gravity_type3_jacobian.py sha256:b9384c5ed1f7f88d
+#   gravity_type4_jacobian.py sha256:60f17c2dd027ad8c
+#   gravity_type5_jacobian.py sha256:aacfe59cf9d8763a
+#   iterative_jacobian.py sha256:c8ee916bafbb5f04
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -27,7 +27,7 @@ import numpy as np
 from numba import carray, njit
 
 from .support import fail, finite, stack
-from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian
 from .geyer_vs_jacobian import bottom_quartic_jac_p_b_E_ab_k_c, geyer_vs_stance_jacobian
@@ -1164,7 +1164,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
+def iterative_report_apex_return_jacobian_tail_4d6c2a(_a, out):
     """The code of iterative_report_apex_return_jacobian's kernels per choice after their choice's own calls,
     shared by the choices with the same code (derive/tangent.py).
 
@@ -1190,58 +1190,76 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
+            [rad]
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 183
-    (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c,
-        _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td,
-        _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td,
-        _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td,
-        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground,
-        _j_t_descent__q_th_td, _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td,
-        _j_t_stance__q_thd_td, _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground,
-        _j_td_q_rd__q_th_td, _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex,
-        _j_td_q_thd__ground, _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_descent, t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4],
-        _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17],
-        _a[18], _a[19], _a[20], _a[21], _a[22], _a[23], _a[24], _a[25], _a[26], _a[27], _a[28], _a[29],
-        _a[30], _a[31], _a[32], _a[33], _a[34], _a[35], _a[36], _a[37], _a[38], _a[39], _a[40], _a[41],
-        _a[42], _a[43], _a[44], _a[45], _a[46])
+    # Total ops: 240
+    (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
+        _j_foot_x__retraction_rate, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td,
+        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d,
+        _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c,
+        _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_descent__retraction_rate, _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td,
+        _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex,
+        _j_td_q_rd__ground, _j_td_q_rd__q_th_td, _j_td_q_rd__retraction_rate, _j_td_q_th__b_y_apex,
+        _j_td_q_th__ground, _j_td_q_th__q_th_td, _j_td_q_th__retraction_rate, _j_td_q_thd__b_xd_apex,
+        _j_td_q_thd__b_y_apex, _j_td_q_thd__ground, _j_td_q_thd__q_th_td, _j_td_q_thd__retraction_rate,
+        b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
+        t_descent, t_stance, td_q_th) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9],
+        _a[10], _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19], _a[20], _a[21],
+        _a[22], _a[23], _a[24], _a[25], _a[26], _a[27], _a[28], _a[29], _a[30], _a[31], _a[32], _a[33],
+        _a[34], _a[35], _a[36], _a[37], _a[38], _a[39], _a[40], _a[41], _a[42], _a[43], _a[44], _a[45],
+        _a[46], _a[47], _a[48], _a[49], _a[50], _a[51], _a[52], _a[53], _a[54])
     # chain rule through iterative_report_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_t_stance__q_th_td*_j_td_q_th__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
     d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
         + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
+    d_t_stance__ground = (_j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_th_td*_j_td_q_th__ground
+        + _j_t_stance__q_thd_td*_j_td_q_thd__ground)
+    d_t_stance__retraction_rate = (_j_t_stance__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_t_stance__q_th_td*_j_td_q_th__retraction_rate
+        + _j_t_stance__q_thd_td*_j_td_q_thd__retraction_rate)
     d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__b_y_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
     d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
         + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
     d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__ground + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_rd__retraction_rate = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__retraction_rate
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__retraction_rate)
     d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__b_y_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
     d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
         + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
     d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__ground + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_th__retraction_rate = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__retraction_rate
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__retraction_rate)
     d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__b_y_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
     d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
         + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
     d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
         + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
     d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__ground + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_thd__retraction_rate = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__retraction_rate
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__retraction_rate
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__retraction_rate)
     # liftoff -> next apex: exact ballistic ascent
     _o0 = carray(stack(20), 20)
     _c0 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
@@ -1270,6 +1288,9 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
         + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
     d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
         + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
+    d_apex_height__retraction_rate = (_j_apex_height__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_apex_height__q_th*d_liftoff_q_th__retraction_rate
+        + _j_apex_height__q_thd*d_liftoff_q_thd__retraction_rate)
     d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
         + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
     d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
@@ -1282,6 +1303,9 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
         + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
     d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
         + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
+    d_apex_speed__retraction_rate = (_j_apex_speed__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_apex_speed__q_th*d_liftoff_q_th__retraction_rate
+        + _j_apex_speed__q_thd*d_liftoff_q_thd__retraction_rate)
     d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
         + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
     d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
@@ -1294,6 +1318,9 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
         + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
     d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
         + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
+    d_t_ascent__retraction_rate = (_j_t_ascent__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_t_ascent__q_th*d_liftoff_q_th__retraction_rate
+        + _j_t_ascent__q_thd*d_liftoff_q_thd__retraction_rate)
     d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
         + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
     d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
@@ -1306,6 +1333,9 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
         + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
     d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
         + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
+    d_next_apex_x__retraction_rate = (_j_next_apex_x__q_rd*d_liftoff_q_rd__retraction_rate
+        + _j_next_apex_x__q_th*d_liftoff_q_th__retraction_rate
+        + _j_next_apex_x__q_thd*d_liftoff_q_thd__retraction_rate)
     d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
         + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
     d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
@@ -1316,11 +1346,14 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
     d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
     d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
     d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
+    d_step_length__retraction_rate = _j_foot_x__retraction_rate + d_next_apex_x__retraction_rate
     foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
     d_t_descent__q_th_td = _j_t_descent__q_th_td
     d_t_descent__ground = _j_t_descent__ground
+    d_t_descent__retraction_rate = _j_t_descent__retraction_rate
     d_t_stance__k_c = _j_t_stance__k_c
     d_t_stance__k_d = _j_t_stance__k_d
     d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
@@ -1335,12 +1368,18 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
     d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
     d_foot_x__q_th_td = _j_foot_x__q_th_td
     d_foot_x__ground = _j_foot_x__ground
+    d_foot_x__retraction_rate = _j_foot_x__retraction_rate
+    d_touchdown_q_th__b_y_apex = _j_td_q_th__b_y_apex
+    d_touchdown_q_th__q_th_td = _j_td_q_th__q_th_td
+    d_touchdown_q_th__ground = _j_td_q_th__ground
+    d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by the role kernels that return them)
     if not (math.isfinite(_o0[0]) and math.isfinite(_o0[1]) and math.isfinite(t_descent)
             and math.isfinite(t_stance) and math.isfinite(_o0[2]) and math.isfinite(liftoff_q_r)
             and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
@@ -1349,22 +1388,29 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
         out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
         out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
         out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76], out[77],
-        out[78], out[79], out[80], out[81], out[82], out[83],) = (_o0[0], _o0[1], t_descent, t_stance, _o0[2],
-        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y,
+        out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
+        out[89], out[90], out[91], out[92], out[93], out[94], out[95], out[96], out[97], out[98], out[99],
+        out[100], out[101], out[102], out[103],) = (_o0[0], _o0[1], t_descent, t_stance, _o0[2], liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,
         d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
-        d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
-        d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d,
-        d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground, 0.0, 0.0, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+        d_apex_height__retraction_rate, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex,
+        d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__retraction_rate,
+        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td,
+        d_t_descent__ground, d_t_descent__retraction_rate, 0.0, 0.0, d_t_stance__b_y_apex,
+        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__retraction_rate,
+        d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
+        d_t_ascent__ground, d_t_ascent__retraction_rate, d_t_ascent__k_c, d_t_ascent__k_d, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__ground, d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
         d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground,
-        d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td,
-        d_foot_x__ground, 0.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0,)
+        d_liftoff_q_th__retraction_rate, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground,
+        d_liftoff_q_thd__retraction_rate, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex,
+        d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground,
+        d_step_length__retraction_rate, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
+        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate, 0.0, 0.0, -1.0,
+        0.0, 0.0, 1.0, 0.0, 0.0, 0.0, d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td,
+        d_touchdown_q_th__ground, d_touchdown_q_th__retraction_rate, 0.0, 0.0,)
     return STATUS_OK
 
 
@@ -1380,7 +1426,7 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
     below into out, in order, and returns
     the status (out all NaN unless OK).
@@ -1392,6 +1438,10 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
+        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
+            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
+            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
+            retraction_rate [rad/s]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
@@ -1418,33 +1468,35 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
+            [rad]
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -1455,17 +1507,18 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -1567,27 +1620,27 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -1598,17 +1651,18 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -1715,27 +1769,27 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -1746,17 +1800,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -1863,27 +1918,27 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -1894,17 +1949,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2011,27 +2067,27 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -2042,17 +2098,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2159,27 +2216,27 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -2190,17 +2247,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2307,27 +2365,27 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -2338,17 +2396,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2455,27 +2514,27 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -2486,17 +2545,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2603,27 +2663,27 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(30), 30)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground, _o0))
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
@@ -2634,17 +2694,18 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
-    _a2 = carray(stack(47), 47)
+    _a2 = carray(stack(55), 55)
     (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
         _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
         _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
         _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
-        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
-        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
-        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
-        _o1[8], _o1[9], _o0[4], _o1[1],)
-    _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
+        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
+        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
+        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
+        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
+        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status

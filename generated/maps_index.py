@@ -38,7 +38,9 @@ APEX_OUTPUTS = [{'name': 'apex_height', 'doc': 'next apex height above the groun
     'foot_x', 'doc': 'horizontal position of the foot at touchdown relative to the apex', 'unit': 'm', 'odd':
     True}, {'name': 'foot_y', 'doc':
     'height of the foot (the touchdown ground) relative to the apex: ground - apex height', 'unit': 'm',
-    'odd': False}]
+    'odd': False}, {'name': 'touchdown_q_th', 'doc':
+    'leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent', 'unit': 'rad',
+    'odd': True}]
 
 TRAJECTORY_OUTPUTS = [{'name': 'q_r', 'doc': 'leg length', 'unit': 'm', 'odd': False}, {'name': 'q_rd', 'doc':
     'leg length rate', 'unit': 'm/s', 'odd': False}, {'name': 'q_th', 'doc':
@@ -57,7 +59,7 @@ GROUPS = {'bottom': ('bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd')
 TOUCHDOWN = ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td']
 
 APEX_PUBLIC = {'b_y_apex': 'apex_height', 'b_xd_apex': 'apex_speed', 'q_th_td': 'touchdown_angle', 'ground':
-    'ground'}
+    'ground', 'retraction_rate': 'retraction_rate'}
 
 MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'section': '3.1', 'equations': [
     '7', '8', '9', '10', '11', '12', '13', '14', '17', '18', '19', '20'], 'params': ['m', 'l0', 'k', 'g_s'],
@@ -69,28 +71,28 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': ['t_bottom', 't_stance', 'bottom_q_r',
     'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
     'liftoff_q_thd']}, 'apex_return': {'module': 'geyer', 'name': 'geyer_apex_return', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y']}, 'state_at': {'module': 'geyer',
-    'name': 'geyer_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
-    'geyer_jacobian', 'name': 'geyer_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p':
-    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': ['t_bottom', 't_stance', 'bottom_q_r',
-    'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {
-    'module': 'geyer_jacobian', 'name': 'geyer_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': ['apex_height',
-    'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'k']}}}, {'name': 'iterative-report', 'title':
-    'Iterative stance map (Schwind and Koditschek, as printed)', 'section': '3.2', 'equations': ['27', '29',
-    '30', '31', '32', '33', '35', '37', '38', '39', '40', '41', '42', '43', '44', '45', '98', '114', '115',
-    '116', '117', '118', '119', '120', '121', '122', '123', '124', '125', '126', '128', '129', '130', '131',
-    '132', '133', '134', '135', '137', '138', '139', '140', '141', '143', '144', '145', '146', '147', '148',
-    '149', '150', '154'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'variant', 'kind':
-    'choice', 'default': 'integrand', 'doc': 'which mean-value form each step uses', 'choices': [{'value':
-    'integrand', 'doc': 'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, {'value':
-    'factor', 'doc':
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td',
+    'q_r_lo'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th']},
+    'state_at': {'module': 'geyer', 'name': 'geyer_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': ['q_r', 'q_rd', 'q_th',
+    'q_thd']}, 'stance_jacobian': {'module': 'geyer_jacobian', 'name': 'geyer_stance_jacobian', 'x': [
+    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'],
+    'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
+    'k']}, 'apex_return_jacobian': {'module': 'geyer_jacobian', 'name': 'geyer_apex_return_jacobian', 'x': [
+    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}}, {
+    'name': 'iterative-report', 'title': 'Iterative stance map (Schwind and Koditschek, as printed)',
+    'section': '3.2', 'equations': ['27', '29', '30', '31', '32', '33', '35', '37', '38', '39', '40', '41',
+    '42', '43', '44', '45', '98', '114', '115', '116', '117', '118', '119', '120', '121', '122', '123', '124',
+    '125', '126', '128', '129', '130', '131', '132', '133', '134', '135', '137', '138', '139', '140', '141',
+    '143', '144', '145', '146', '147', '148', '149', '150', '154'], 'params': ['m', 'l0', 'k_c', 'k_d',
+    'g_s'], 'options': [{'name': 'variant', 'kind': 'choice', 'default': 'integrand', 'doc':
+    'which mean-value form each step uses', 'choices': [{'value': 'integrand', 'doc':
+    'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, {'value': 'factor', 'doc':
     'only 1/H^{-1} at the point, the weights 1/sigma^2 and sigma integrated exactly: (133)-(135), '
     '(148)-(150), with (134)/(149) keeping p_th' }], 'low': None, 'high': None, 'at_rest_length': [],
     'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants',
@@ -133,25 +135,26 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'base': 'iterative_report_stance'}, 'apex_return': {
     'module': 'iterative_report', 'name': 'iterative_report_apex_return_zeroth_geyer', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'variant', 'iterations', 'bottom_length'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
-    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y'], 'base': 'iterative_report_apex_return'}, 'stance_jacobian': {'module':
-    'iterative_report_jacobian', 'name': 'iterative_report_stance_jacobian_zeroth_geyer', 'x': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'variant', 'iterations', 'bottom_length'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd',
-    'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'base':
-    'iterative_report_stance_jacobian', 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
-    'apex_return_jacobian': {'module': 'iterative_report_jacobian', 'name':
-    'iterative_report_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'],
-    'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations',
-    'bottom_length'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y'], 'base':
-    'iterative_report_apex_return_jacobian', 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'k_c',
-    'k_d']}}}, {'name': 'gravity-type0', 'title': 'Gravity correction type 0 (leg length l0)', 'section':
-    '4.1', 'equations': ['46', '47', '48', '49', '50', '51'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{
-    'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)",
-    'choices': [{'value': 'mean', 'doc':
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'], 'out': ['apex_height', 'apex_speed',
+    't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd',
+    'step_length', 'foot_x', 'foot_y', 'touchdown_q_th'], 'base': 'iterative_report_apex_return'},
+    'stance_jacobian': {'module': 'iterative_report_jacobian', 'name':
+    'iterative_report_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': [
+    'm', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'],
+    'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'base': 'iterative_report_stance_jacobian', 'wrt': [
+    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module':
+    'iterative_report_jacobian', 'name': 'iterative_report_apex_return_jacobian_zeroth_geyer', 'x': [
+    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'], 'out': ['apex_height', 'apex_speed',
+    't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd',
+    'step_length', 'foot_x', 'foot_y', 'touchdown_q_th'], 'base': 'iterative_report_apex_return_jacobian',
+    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}}, {'name':
+    'gravity-type0', 'title': 'Gravity correction type 0 (leg length l0)', 'section': '4.1', 'equations': [
+    '46', '47', '48', '49', '50', '51'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading',
+    'kind': 'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{
+    'value': 'mean', 'doc':
     'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
     'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
     "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
@@ -175,23 +178,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type0', 'name':
-    'gravity_type0_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['apex_height',
-    'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes']}, 'state_at': {'module':
-    'gravity_type0', 'name': 'gravity_type0_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out':
-    ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type0_jacobian', 'name':
-    'gravity_type0_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_type0_jacobian', 'name':
-    'gravity_type0_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m',
-    'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': [
+    'gravity_type0_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
+    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes'], 'wrt': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'k']}}}, {'name': 'gravity-type1', 'title':
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']},
+    'state_at': {'module': 'gravity_type0', 'name': 'gravity_type0_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
+    'gravity_type0_jacobian', 'name': 'gravity_type0_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations',
+    'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type0_jacobian',
+    'name': 'gravity_type0_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate', 'k']}}}, {'name': 'gravity-type1', 'title':
     'Gravity correction type 1 (leg length (l0 + q_r_b)/2)', 'section': '4.2', 'equations': ['46', '47', '48',
     '50', '52', '53', '54'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading', 'kind':
     'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value':
@@ -219,23 +223,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type1', 'name':
-    'gravity_type1_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['apex_height',
-    'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes']}, 'state_at': {'module':
-    'gravity_type1', 'name': 'gravity_type1_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out':
-    ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type1_jacobian', 'name':
-    'gravity_type1_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_type1_jacobian', 'name':
-    'gravity_type1_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m',
-    'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': [
+    'gravity_type1_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
+    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes'], 'wrt': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'k']}}}, {'name': 'gravity-type2', 'title':
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']},
+    'state_at': {'module': 'gravity_type1', 'name': 'gravity_type1_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
+    'gravity_type1_jacobian', 'name': 'gravity_type1_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations',
+    'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type1_jacobian',
+    'name': 'gravity_type1_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate', 'k']}}}, {'name': 'gravity-type2', 'title':
     'Gravity correction type 2 (average leg length)', 'section': '4.3', 'equations': ['46', '47', '48', '50',
     '55', '56', '57', '58', '59', '60', '61', '62', '63', '64'], 'params': ['m', 'l0', 'k', 'g_s'], 'options':
     [{'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc':
@@ -269,27 +274,28 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module':
-    'gravity_type2', 'name': 'gravity_type2_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'iterations',
-    'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes']},
-    'state_at': {'module': 'gravity_type2', 'name': 'gravity_type2_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'leg_length', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {
-    'module': 'gravity_type2_jacobian', 'name': 'gravity_type2_stance_jacobian', 'x': ['q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'leg_length', 'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd',
-    'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c',
-    'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module':
-    'gravity_type2_jacobian', 'name': 'gravity_type2_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'gravity_type2', 'name': 'gravity_type2_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
     'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
     't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'k']}}}, {'name':
-    'gravity-type3', 'title': 'Gravity correction type 3 (trapezoid on [t_i, t_f])', 'section': '4.4',
-    'equations': ['46', '47', '48', '50', '65', '66'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name':
-    'reading', 'kind': 'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)",
-    'choices': [{'value': 'mean', 'doc':
+    'foot_y', 'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity_type2', 'name':
+    'gravity_type2_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'iterations', 'tol'], 'out': ['q_r',
+    'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type2_jacobian', 'name':
+    'gravity_type2_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'iterations', 'tol'], 'out': [
+    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type2_jacobian', 'name':
+    'gravity_type2_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
+    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
+    'foot_y', 'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate', 'k']}}}, {'name': 'gravity-type3', 'title':
+    'Gravity correction type 3 (trapezoid on [t_i, t_f])', 'section': '4.4', 'equations': ['46', '47', '48',
+    '50', '65', '66'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading', 'kind': 'choice',
+    'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value': 'mean', 'doc':
     'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
     'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
     "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
@@ -315,23 +321,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type3', 'name':
-    'gravity_type3_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'], 'out': ['apex_height',
-    'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes']}, 'state_at': {'module':
-    'gravity_type3', 'name': 'gravity_type3_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'],
-    'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type3_jacobian', 'name':
-    'gravity_type3_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_type3_jacobian', 'name':
-    'gravity_type3_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m',
-    'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'], 'out': [
+    'gravity_type3_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
+    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes'], 'wrt': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'k']}}}, {'name': 'gravity-type4', 'title':
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']},
+    'state_at': {'module': 'gravity_type3', 'name': 'gravity_type3_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
+    'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
+    'gravity_type3_jacobian', 'name': 'gravity_type3_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations',
+    'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type3_jacobian',
+    'name': 'gravity_type3_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
+    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate', 'k']}}}, {'name': 'gravity-type4', 'title':
     'Gravity correction type 4 (average leg length on [t_i, t_f])', 'section': '4.5', 'equations': ['46',
     '47', '48', '50', '67', '68', '69', '70', '71', '72', '73', '74', '75', '76', '77'], 'params': ['m', 'l0',
     'k', 'g_s'], 'options': [{'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc':
@@ -367,28 +374,30 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'leg_length', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module':
-    'gravity_type4', 'name': 'gravity_type4_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'leg_length', 'iterations',
-    'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes']},
-    'state_at': {'module': 'gravity_type4', 'name': 'gravity_type4_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
-    'leg_length', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {
-    'module': 'gravity_type4_jacobian', 'name': 'gravity_type4_stance_jacobian', 'x': ['q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
-    'leg_length', 'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd',
-    'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c',
-    'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module':
-    'gravity_type4_jacobian', 'name': 'gravity_type4_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
+    'gravity_type4', 'name': 'gravity_type4_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
     'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
     't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'k']}}}, {'name':
-    'gravity-type5', 'title': 'Gravity correction type 5 (time-varying momentum)', 'section': '4.6',
-    'equations': ['46', '47', '48'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'iterations',
-    'kind': 'int', 'default': 100, 'doc': "fixed-point passes T5.8 from Geyer's map", 'choices': [], 'low': 0,
-    'high': 1000, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-passes', 'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
+    'foot_y', 'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity_type4', 'name':
+    'gravity_type4_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'leg_length', 'iterations', 'tol'], 'out': [
+    'q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type4_jacobian', 'name':
+    'gravity_type4_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'leg_length', 'iterations', 'tol'], 'out': [
+    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type4_jacobian', 'name':
+    'gravity_type4_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
+    'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
+    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
+    'foot_y', 'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate', 'k']}}}, {'name': 'gravity-type5', 'title':
+    'Gravity correction type 5 (time-varying momentum)', 'section': '4.6', 'equations': ['46', '47', '48'],
+    'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'iterations', 'kind': 'int', 'default': 100,
+    'doc': "fixed-point passes T5.8 from Geyer's map", 'choices': [], 'low': 0, 'high': 1000,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
+    'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
     'stop when every state moved by at most tol times its scale; 0: run all passes', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'tolerance']}], 'module': 'gravity_type5', 'summary':
@@ -402,22 +411,23 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r',
     'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
     'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type5', 'name':
-    'gravity_type5_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
+    'gravity_type5_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
+    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['apex_height',
+    'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
+    'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {
+    'module': 'gravity_type5', 'name': 'gravity_type5_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['q_r',
+    'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type5_jacobian', 'name':
+    'gravity_type5_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r',
+    'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
+    'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']},
+    'apex_return_jacobian': {'module': 'gravity_type5_jacobian', 'name': 'gravity_type5_apex_return_jacobian',
+    'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
     't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
-    'foot_x', 'foot_y', 'P_c', 'passes']}, 'state_at': {'module': 'gravity_type5', 'name':
-    'gravity_type5_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']},
-    'stance_jacobian': {'module': 'gravity_type5_jacobian', 'name': 'gravity_type5_stance_jacobian', 'x': [
-    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th',
-    'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': [
-    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module':
-    'gravity_type5_jacobian', 'name': 'gravity_type5_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out':
-    ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'P_c', 'passes'], 'wrt': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'k']}}}, {'name': 'geyer-vs', 'title':
+    'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td',
+    'ground', 'retraction_rate', 'k']}}}, {'name': 'geyer-vs', 'title':
     'Simple variable-stiffness map (Geyer et al. per half)', 'section': '5.1', 'equations': ['78', '79', '80',
     '81', '82', '83', '84', '85', '86', '87', '88', '89', '90', '91', '92', '93', '94', '96', '97', '98',
     '99', '100', '101', '102', '103', '104', '105', '106', '107', '108', '109', '110', '111', '112', '113'],
@@ -455,31 +465,31 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c_compression', 'P_c_decompression', 'passes']},
     'apex_return': {'module': 'geyer_vs', 'name': 'geyer_vs_apex_return', 'x': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity',
-    'gravity', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'P_c_compression', 'P_c_decompression', 'passes']}, 'state_at': {'module': 'geyer_vs', 'name':
-    'geyer_vs_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c',
-    'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': ['q_r',
-    'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'geyer_vs_jacobian', 'name':
-    'geyer_vs_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c',
-    'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': [
+    'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'continuity', 'gravity', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
+    't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
+    'foot_x', 'foot_y', 'touchdown_q_th', 'P_c_compression', 'P_c_decompression', 'passes']}, 'state_at': {
+    'module': 'geyer_vs', 'name': 'geyer_vs_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'],
+    'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations',
+    'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'geyer_vs_jacobian',
+    'name': 'geyer_vs_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c_compression', 'P_c_decompression', 'passes'], 'wrt':
     ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module':
     'geyer_vs_jacobian', 'name': 'geyer_vs_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity',
-    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'P_c_compression', 'P_c_decompression', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'k_c', 'k_d']}}}, {'name': 'iterative', 'title':
-    'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2', 'equations': ['27',
-    '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118', '137'], 'params': ['m',
-    'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'nodes', 'kind': 'choice', 'default': '4', 'doc':
-    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))", 'choices': [{
-    'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc': '3 nodes'}, {
-    'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}], 'low': None, 'high': None,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'continuity', 'gravity', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
+    't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
+    'foot_x', 'foot_y', 'touchdown_q_th', 'P_c_compression', 'P_c_decompression', 'passes'], 'wrt': [
+    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}}, {'name': 'iterative',
+    'title': 'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2', 'equations':
+    ['27', '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118', '137'],
+    'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'nodes', 'kind': 'choice', 'default':
+    '4', 'doc': "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))",
+    'choices': [{'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc':
+    '3 nodes'}, {'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}], 'low': None, 'high':
+    None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
     'Picard passes per half-stance (0 = the zeroth iterate)', 'choices': [], 'low': 0, 'high': 100,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
@@ -515,20 +525,22 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'passes'], 'base': 'iterative_stance'}, 'apex_return': {'module':
     'iterative', 'name': 'iterative_apex_return_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'],
-    'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'passes'], 'base':
-    'iterative_apex_return'}, 'stance_jacobian': {'module': 'iterative_jacobian', 'name':
-    'iterative_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
-    'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'passes'], 'base': 'iterative_stance_jacobian', 'wrt': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module': 'iterative_jacobian',
-    'name': 'iterative_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'],
-    'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'passes'], 'base':
-    'iterative_apex_return_jacobian', 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'k_c', 'k_d']}}}]
+    'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
+    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th', 'passes'], 'base': 'iterative_apex_return'}, 'stance_jacobian': {'module':
+    'iterative_jacobian', 'name': 'iterative_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
+    'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th',
+    'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'passes'], 'base':
+    'iterative_stance_jacobian', 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
+    'apex_return_jacobian': {'module': 'iterative_jacobian', 'name':
+    'iterative_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
+    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th', 'passes'], 'base': 'iterative_apex_return_jacobian', 'wrt': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}}]
 
 HALVES = [{'name': 'exact-compression', 'title':
     'Exact compression half (touchdown to bottom, k_c; DOP853 integration)', 'section': '2.2', 'equations': [
@@ -712,40 +724,41 @@ EXACT = {'name': 'exact', 'title': 'Exact stance by numerical integration (DOP85
     'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['t_bottom', 't_stance',
     'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
     'liftoff_q_thd']}, 'apex_return': {'module': 'exact', 'name': 'exact_apex_return', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'rtol', 'atol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y']}, 'state_at': {
-    'module': 'exact', 'name': 'exact_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p':
-    ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['q_r', 'q_rd',
-    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'exact_jacobian', 'name': 'exact_stance_jacobian', 'x': [
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
+    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
+    'foot_y', 'touchdown_q_th']}, 'state_at': {'module': 'exact', 'name': 'exact_state_at', 'x': ['t',
     'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td',
-    'q_r_lo', 'rtol', 'atol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th',
-    'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'wrt': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module': 'exact_jacobian',
-    'name': 'exact_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground'], 'p': ['m',
-    'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['apex_height',
-    'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'q_r_lo', 'rtol', 'atol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
+    'exact_jacobian', 'name': 'exact_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p':
+    ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['t_bottom',
+    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
+    'apex_return_jacobian': {'module': 'exact_jacobian', 'name': 'exact_apex_return_jacobian', 'x': [
+    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
+    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
+    'foot_y', 'touchdown_q_th'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate',
     'k_c', 'k_d']}}}
 
 MODEL = {'apex_to_touchdown': {'module': 'model', 'name': 'apex_to_touchdown_entry', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'q_r_td', 'g_f', 'ground'], 'p': [], 'out': ['touchdown_q_r', 'touchdown_q_rd',
-    'touchdown_q_th', 'touchdown_q_thd', 't_flight', 'foot_x']}, 'liftoff_to_apex': {'module': 'model',
-    'name': 'liftoff_to_apex_entry', 'x': ['q_r', 'q_rd', 'q_th', 'q_thd', 'g_f', 'direction'], 'p': [],
-    'out': ['apex_b_y', 'apex_b_xd', 't_flight', 'dx_flight', 'apex_b_x']}, 'stance_polar_rhs': {'module':
-    'model', 'name': 'stance_polar_rhs_entry', 'x': ['q_r', 'q_rd', 'q_th', 'q_thd', 'm', 'l0', 'k', 'g_s'],
-    'p': [], 'out': ['d_q_r', 'd_q_rd', 'd_q_th', 'd_q_thd']}, 'stance_cartesian_rhs': {'module': 'model',
-    'name': 'stance_cartesian_rhs_entry', 'x': ['b_x', 'b_xd', 'b_y', 'b_yd', 'm', 'l0', 'k', 'g_s'], 'p': [],
-    'out': ['d_b_x', 'd_b_xd', 'd_b_y', 'd_b_yd']}, 'stance_energy': {'module': 'model', 'name':
-    'stance_energy_entry', 'x': ['q_r', 'q_rd', 'q_th', 'q_thd', 'm', 'l0', 'k', 'g_s'], 'p': [], 'out': [
-    'energy']}, 'polar_to_cartesian': {'module': 'model', 'name': 'polar_to_cartesian_entry', 'x': ['q_r',
-    'q_rd', 'q_th', 'q_thd'], 'p': [], 'out': ['out_b_x', 'out_b_xd', 'out_b_y', 'out_b_yd']},
-    'cartesian_to_polar': {'module': 'model', 'name': 'cartesian_to_polar_entry', 'x': ['b_x', 'b_xd', 'b_y',
-    'b_yd'], 'p': [], 'out': ['out_q_r', 'out_q_rd', 'out_q_th', 'out_q_thd']}, 'max_step': {'module':
-    'model', 'name': 'max_step_entry', 'x': ['m', 'l0', 'k', 'g_s'], 'p': [], 'out': ['step']},
-    'stance_time_limit': {'module': 'model', 'name': 'stance_time_limit_entry', 'x': ['m', 'l0', 'k_c', 'k_d',
-    'g_s'], 'p': [], 'out': ['t_max']}, 'bottom_quartic': {'module': 'model', 'name': 'bottom_quartic_entry',
-    'x': ['p_b', 'E_ab', 'm', 'l0', 'k_c', 'g_s'], 'p': [], 'out': ['q_r_b']}}
+    'b_xd_apex', 'q_th_td', 'q_r_td', 'g_f', 'ground', 'retraction_rate'], 'p': [], 'out': ['touchdown_q_r',
+    'touchdown_q_rd', 'touchdown_q_th', 'touchdown_q_thd', 't_flight', 'foot_x']}, 'liftoff_to_apex': {
+    'module': 'model', 'name': 'liftoff_to_apex_entry', 'x': ['q_r', 'q_rd', 'q_th', 'q_thd', 'g_f',
+    'direction'], 'p': [], 'out': ['apex_b_y', 'apex_b_xd', 't_flight', 'dx_flight', 'apex_b_x']},
+    'stance_polar_rhs': {'module': 'model', 'name': 'stance_polar_rhs_entry', 'x': ['q_r', 'q_rd', 'q_th',
+    'q_thd', 'm', 'l0', 'k', 'g_s'], 'p': [], 'out': ['d_q_r', 'd_q_rd', 'd_q_th', 'd_q_thd']},
+    'stance_cartesian_rhs': {'module': 'model', 'name': 'stance_cartesian_rhs_entry', 'x': ['b_x', 'b_xd',
+    'b_y', 'b_yd', 'm', 'l0', 'k', 'g_s'], 'p': [], 'out': ['d_b_x', 'd_b_xd', 'd_b_y', 'd_b_yd']},
+    'stance_energy': {'module': 'model', 'name': 'stance_energy_entry', 'x': ['q_r', 'q_rd', 'q_th', 'q_thd',
+    'm', 'l0', 'k', 'g_s'], 'p': [], 'out': ['energy']}, 'polar_to_cartesian': {'module': 'model', 'name':
+    'polar_to_cartesian_entry', 'x': ['q_r', 'q_rd', 'q_th', 'q_thd'], 'p': [], 'out': ['out_b_x', 'out_b_xd',
+    'out_b_y', 'out_b_yd']}, 'cartesian_to_polar': {'module': 'model', 'name': 'cartesian_to_polar_entry',
+    'x': ['b_x', 'b_xd', 'b_y', 'b_yd'], 'p': [], 'out': ['out_q_r', 'out_q_rd', 'out_q_th', 'out_q_thd']},
+    'max_step': {'module': 'model', 'name': 'max_step_entry', 'x': ['m', 'l0', 'k', 'g_s'], 'p': [], 'out': [
+    'step']}, 'stance_time_limit': {'module': 'model', 'name': 'stance_time_limit_entry', 'x': ['m', 'l0',
+    'k_c', 'k_d', 'g_s'], 'p': [], 'out': ['t_max']}, 'bottom_quartic': {'module': 'model', 'name':
+    'bottom_quartic_entry', 'x': ['p_b', 'E_ab', 'm', 'l0', 'k_c', 'g_s'], 'p': [], 'out': ['q_r_b']}}
 
 SIMULATION = {'DEFAULT_RTOL': 1e-11, 'DEFAULT_ATOL': 1e-12, 'COLLAPSE_FRACTION': 0.001, 'T_MAX_PERIODS': 20,
     'MAX_STEP_FRACTION': 0.0625}

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c8466d021d7dd8ec
-#   geyer_vs.py sha256:083f4e79a9d597a8
+#   flight.py sha256:456f9ff51de745b4
+#   geyer_vs.py sha256:3eb3efab7f354993
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -33,11 +33,13 @@ NAN = math.nan
 
 @njit(cache=True, error_model="numpy")
 def apex_to_touchdown_entry(x, p, out):
-    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td).
+    """Ballistic descent from an apex to touchdown with the leg at q_r_td swinging from q_th_td at
+    retraction_rate.
 
     Report equations: sec2.1-touchdown, sec2.2.2.
 
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground) and the parameter record
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate) and the
+    parameter record
     p = (); writes the outputs below into out, in order, and returns
     the status (out all NaN unless OK).
 
@@ -54,9 +56,10 @@ def apex_to_touchdown_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground) = (x[0], x[1], x[2], x[3], x[4], x[5])
+    (b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4],
+        x[5], x[6])
     # flight.apex_to_touchdown
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     touchdown_q_r = _c0[0]

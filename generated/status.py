@@ -35,6 +35,7 @@ class Status(IntEnum):
     NOT_CONVERGED = 13
     ENERGY_DEFICIT = 14
     IMAGINARY_MOMENTUM = 15
+    NO_TOUCHDOWN = 16
 
     def __str__(self) -> str:
         return self.name
@@ -64,6 +65,7 @@ STATUS_NUMERICAL_RANGE = 12
 STATUS_NOT_CONVERGED = 13
 STATUS_ENERGY_DEFICIT = 14
 STATUS_IMAGINARY_MOMENTUM = 15
+STATUS_NO_TOUCHDOWN = 16
 
 #: Human-readable message for each status code.
 MESSAGES = {
@@ -88,4 +90,7 @@ MESSAGES = {
         "real q_rd_lo)",
     15: "the radial momentum p_r of an iterate is imaginary (H^{-1} of (33) or the radial "
         "work \u003c 0: the iterate overshoots the turning point)",
+    16: "the swinging leg does not meet the ground from above with |q_th| \u003c pi/2 (the "
+        "retraction rate sweeps the foot away from the ground or the leg past the "
+        "horizontal)",
 }

@@ -584,7 +584,7 @@ def test_map_module_exports_kernels_with_index_signatures(row):
     assert roles["apex_return"]["x"] == list(maps_index.APEX_PUBLIC)
     if "state_at" in roles:
         assert roles["state_at"]["x"] == ["t", *maps_index.TOUCHDOWN]
-    assert roles["apex_return_jacobian"]["wrt"][:4] == list(maps_index.APEX_PUBLIC)
+    assert roles["apex_return_jacobian"]["wrt"][: len(maps_index.APEX_PUBLIC)] == list(maps_index.APEX_PUBLIC)
 
 
 @pytest.mark.parametrize("mod", KERNEL_MODULES, ids=_mod_id)
@@ -852,32 +852,50 @@ def _apex_points(name, n=N_POINTS):
             b_y_apex=max(ground, 0.0) + q_r_td * math.cos(q_th_td) + rng.uniform(0.02, 0.5) * p["l0"],
             b_xd_apex=rng.choice([-1.0, 1.0]) * rng.uniform(0.5, 8.0),  # signed: either direction
         )
+        # a swinging leg, within the concave range and short of the horizontal at touchdown
+        t_far = math.sqrt(2 * (p["b_y_apex"] - ground + q_r_td) / p["g_f"])
+        bound = min(0.9 * math.sqrt(p["g_f"] / q_r_td), (1.4 - abs(q_th_td)) / t_far)
+        p["retraction_rate"] = rng.uniform(-1.0, 1.0) * bound
         pts.append(p)
     return pts
 
 
-A2T_ARGS = ("b_y_apex", "b_xd_apex", "q_th_td", "q_r_td", "g_f", "ground")
+A2T_ARGS = ("b_y_apex", "b_xd_apex", "q_th_td", "q_r_td", "g_f", "ground", "retraction_rate")
 
 
 def _apex_to_touchdown_ref(env, cse):
+    """The derivation's touchdown: its closed-form start, Newton's method on its residual to round-off
+    (here, in floats), then its state and foot at that time."""
     atd = d_flight.apex_to_touchdown()
     env = {**env, atd["drop_symbol"].name: ev(atd["drop"], env, cse)}
-    return [ev(e, env, cse) for e in atd["state"]] + [ev(atd[k], env, cse) for k in ("t_flight", "foot_x")]
+    env[atd["t0_symbol"].name] = t = ev(atd["t0"], env, cse)
+    for _ in range(60):
+        step = ev(atd["residual"], {**env, "t": t}, cse) / ev(atd["slope"], {**env, "t": t}, cse)
+        t -= step
+        if abs(step) <= 1e-15 * t:
+            break
+    env = {**env, "t": t, atd["angle_symbol"].name: ev(atd["angle"], {**env, "t": t}, cse)}
+    return [ev(e, env, cse) for e in atd["state"]] + [t, ev(atd["foot_x"], env, cse)]
 
 
 def test_apex_to_touchdown_matches_derivation():
     assert _params(g_flight.apex_to_touchdown) == list(A2T_ARGS)
     pts = _apex_points("a2t")
     got = _assert_agree(g_flight.apex_to_touchdown, A2T_ARGS, pts, _apex_to_touchdown_ref, 6)
-    # Physics of the descent onto ground `ground` higher: falling speed sqrt(2 g drop), horizontal
-    # speed kept, the toe a flight's travel plus q_r_td sin(q_th_td) ahead of the apex.
+    # Physics of the descent onto ground `ground` higher with the leg swinging at retraction_rate:
+    # at touchdown the foot is on the ground, the leg at the swung angle, the falling speed g t, the
+    # horizontal speed kept, the toe a flight's travel plus q_r_td sin(angle) ahead of the apex.
+    assert any(abs(env["retraction_rate"]) > 0.1 for env in pts)
     for env, row in zip(pts, got, strict=True):
+        t = row[4]
+        angle = env["q_th_td"] + env["retraction_rate"] * t
+        assert row[2] == pytest.approx(angle, rel=1e-12, abs=1e-14)
+        foot_y = env["b_y_apex"] - env["g_f"] * t * t / 2 - env["ground"] - env["q_r_td"] * math.cos(angle)
+        assert abs(foot_y) <= 1e-12 * env["l0"], foot_y
         _, xd, _, yd = g_slip.polar_to_cartesian(*row[:4])
         assert xd == pytest.approx(env["b_xd_apex"], rel=1e-12)
-        drop = env["b_y_apex"] - env["ground"] - env["q_r_td"] * math.cos(env["q_th_td"])
-        assert yd == pytest.approx(-math.sqrt(2 * env["g_f"] * drop), rel=1e-12)
-        assert row[4] == pytest.approx(-yd / env["g_f"], rel=1e-12)
-        foot = env["b_xd_apex"] * row[4] + env["q_r_td"] * math.sin(env["q_th_td"])
+        assert yd == pytest.approx(-env["g_f"] * t, rel=1e-12)
+        foot = env["b_xd_apex"] * t + env["q_r_td"] * math.sin(angle)
         assert row[5] == pytest.approx(foot, rel=1e-12, abs=1e-12)
 
 
@@ -1078,9 +1096,10 @@ def test_apex_return_is_flight_stance_flight_composition(row):
             env["ground"] + env["q_r_td"] * math.cos(env["q_th_td"]) + rng.uniform(-0.01, 0.2) * env["l0"]
         )
         env["b_xd_apex"] = rng.uniform(0.3, 2.5) * math.sqrt(env["g_f"] * env["l0"])
+        env["retraction_rate"] = rng.choice([0.0, rng.uniform(-1.0, 0.3)])
         got = kernels.invoke(apex_return, env)
         assert len(got) == len(APEX_OUT) + len(extras) + 1
-        td = g_flight.apex_to_touchdown(*(env[k] for k in A2T_ARGS))
+        td = kernels.invoke(kernels.declaration("flight", "apex_to_touchdown"), env)
         stance_env = {**env, **dict(zip(maps_index.TOUCHDOWN, td[:4], strict=True))}
         st = kernels.invoke(stance, stance_env)
         failed = next((res[-1] for res in (td, st) if res[-1] != OK), None)
@@ -1102,6 +1121,7 @@ def test_apex_return_is_flight_stance_flight_composition(row):
             "step_length": td[5] + ap[4],
             "foot_x": td[5],
             "foot_y": env["ground"] - env["b_y_apex"],
+            "touchdown_q_th": td[2],
             **{k: out[k] for k in ("t_stance", *(f"liftoff_{p}" for p in POLAR), *extras)},
         }
         assert got == (*(expected[k] for k in APEX_OUT + extras), OK)

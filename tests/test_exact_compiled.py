@@ -18,9 +18,9 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 from slipmaps.generated import exact_stance as ec
 from slipmaps.generated import exact_stance as ek
-from slipmaps.generated import flight as gen_flight
 from slipmaps.generated import slip_model as gen
 from slipmaps.generated.status import Status
+from slipmaps.runtime.api import model
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from slipmaps.runtime.api.results import GROUPS
 from slipmaps.runtime.exact import reference as sim
@@ -318,9 +318,10 @@ def _halves(p: SlipParams, td) -> tuple[tuple, tuple | None]:
 
 
 def _step_touchdown(p: SlipParams, height: float, speed: float, angle: float) -> tuple[float, ...]:
-    return tuple(
-        float(x) for x in gen_flight.apex_to_touchdown(height, speed, angle, p.q_r_td, p.g_f, 0.0)[:4]
+    _, td = model.call(
+        "apex_to_touchdown", b_y_apex=height, b_xd_apex=speed, q_th_td=angle, q_r_td=p.q_r_td, g_f=p.g_f
     )
+    return tuple(td[f"touchdown_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd"))
 
 
 def _max_rel(a, b) -> float:

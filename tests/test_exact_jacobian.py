@@ -16,15 +16,18 @@ import numpy as np
 import pytest
 import slipmaps
 from slipmaps.generated import exact_stance as ej
-from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import Status
+from slipmaps.runtime.api import model
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 
 FD_STEP = 1e-5
 
 
 def _touchdown(p: SlipParams, height: float, speed: float, angle: float) -> tuple[float, ...]:
-    return tuple(gen_flight.apex_to_touchdown(height, speed, angle, p.q_r_td, p.g_f, 0.0)[:4])
+    _, td = model.call(
+        "apex_to_touchdown", b_y_apex=height, b_xd_apex=speed, q_th_td=angle, q_r_td=p.q_r_td, g_f=p.g_f
+    )
+    return tuple(td[f"touchdown_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd"))
 
 
 SYMMETRIC_ANGLE = 0.41116492751713  # the human runner's symmetric fixed point at 1 m, 5 m/s

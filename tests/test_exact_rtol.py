@@ -19,8 +19,8 @@ import numpy as np
 import pytest
 import slipmaps
 from slipmaps.generated import exact_stance as ec
-from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import Status
+from slipmaps.runtime.api import model
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER
 from slipmaps.runtime.exact.reference import stance_time_limit
 from slipmaps.runtime.studies.grids import GRIDS
@@ -62,7 +62,10 @@ def _state_error(got: np.ndarray, ref: np.ndarray) -> float:
 
 
 def _touchdown(params, h, v, th) -> np.ndarray:
-    return np.array(gen_flight.apex_to_touchdown(h, v, th, params.q_r_td, params.g_f, 0.0)[:4])
+    _, td = model.call(
+        "apex_to_touchdown", b_y_apex=h, b_xd_apex=v, q_th_td=th, q_r_td=params.q_r_td, g_f=params.g_f
+    )
+    return np.array([td[f"touchdown_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd")])
 
 
 # ----------------------------------------------------------------------------------------------

@@ -37,7 +37,7 @@ ODD = {
 }
 ODD |= {e["name"] for row in (*maps_index.MAPS, *maps_index.HALVES) for e in row["extras"] if e["odd"]}
 #: ... and of every input a Jacobian has.
-ODD_INPUTS = {"apex_speed", "touchdown_angle", "q_th_td", "q_thd_td"}
+ODD_INPUTS = {"apex_speed", "touchdown_angle", "retraction_rate", "q_th_td", "q_thd_td"}
 
 
 def _params(name: str) -> slipmaps.SlipParams:

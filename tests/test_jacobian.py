@@ -71,28 +71,31 @@ def _central(f, x0: tuple, j: int, h: float, outputs) -> np.ndarray:
     return np.array([(a[o] - b[o]) / (2 * h) for o in outputs])
 
 
-#: Apex-return points (apex height, speed, touchdown angle, ground): running toward +x onto a step
-#: up of 5 cm from a 1.1 m apex, and toward -x (the mirrored angle) onto a step down of 3 cm; both
-#: fall 9-11 cm to touchdown, as the flat-ground point (1.0, 5.0, 0.35) does 6 cm (a grazing
-#: touchdown's derivatives grow as 1/sqrt(drop), beyond the difference quotients' reach).
-APEX_POINTS = [(1.1, 5.0, 0.35, 0.05), (1.0, -5.0, -0.35, -0.03)]
+#: Apex-return points (apex height, speed, touchdown angle, ground, retraction rate): running toward
+#: +x onto a step up of 5 cm from a 1.1 m apex with the leg retracting at 0.5 rad/s, and toward -x
+#: (the mirrored angle and rate) onto a step down of 3 cm; both fall 9-11 cm to touchdown, as the
+#: flat-ground point (1.0, 5.0, 0.35) does 6 cm (a grazing touchdown's derivatives grow as
+#: 1/sqrt(drop), beyond the difference quotients' reach).
+APEX_POINTS = [(1.1, 5.0, 0.35, 0.05, -0.5), (1.0, -5.0, -0.35, -0.03, 0.5)]
+APEX_NAMES = ("apex_height", "apex_speed", "touchdown_angle", "ground", "retraction_rate")
 
 
 @pytest.mark.parametrize("point", APEX_POINTS, ids=["forward-step-up", "backward-step-down"])
 @pytest.mark.parametrize("name", NAMES)
 def test_apex_return_jacobian_matches_central_differences(name, point):
-    """Every column, the ground's and the signed speed's included, against central differences."""
+    """Every column, the ground's, the signed speed's and the retraction rate's included, against
+    central differences."""
     params = _params_for(name)
-    jac = slipmaps.apex_return_jacobian(name, params, *point[:3], ground=point[3])
+    jac = slipmaps.apex_return_jacobian(name, params, *point[:3], ground=point[3], retraction_rate=point[4])
     assert jac.ok, jac.message
-    assert jac.inputs[:4] == ("apex_height", "apex_speed", "touchdown_angle", "ground")
+    assert jac.inputs[:5] == APEX_NAMES
 
-    def apex_return(h, v, th, ground, p=params):
-        return slipmaps.apex_return(name, p, h, v, th, ground=ground)
+    def apex_return(h, v, th, ground, rate, p=params):
+        return slipmaps.apex_return(name, p, h, v, th, ground=ground, retraction_rate=rate)
 
     columns, steps = [], []
     for j, inp in enumerate(jac.inputs):
-        if j < 4:
+        if j < 5:
             h = REL_STEP.get(name, 1e-6) * max(1.0, abs(point[j]))
             columns.append(_central(apex_return, point, j, h, jac.outputs))
         else:

@@ -463,6 +463,7 @@ def sweep_env(gait_row) -> dict[str, float]:
         "q_r_td": r_td * l0,
         "q_r_lo": r_lo * l0,
         "direction": 1.0,
+        "retraction_rate": 0.0,
     }
     env.update(touchdown_from(th, vx, vy, env["q_r_td"]))
     env.update(apex_from(th, vx, vy, env["q_r_td"], G))
@@ -530,7 +531,8 @@ DOMAINS = {
     "q_th_td": ("angle",),
     "t": ("negative",),
     "b_y_apex": ("negative",),
-    # b_xd_apex and ground: any finite value (a signed speed; a step up or down)
+    # b_xd_apex, ground and retraction_rate: any finite value (a signed speed; a step up or down; a
+    # rate, beyond sqrt(g_f/q_r_td) refused by the descent: tests/test_retraction.py)
 }
 #: The flight kernels have no l0 and take any apex speed and liftoff state.
 FLIGHT_DOMAINS = {
@@ -661,9 +663,7 @@ def test_apex_return_is_descent_then_stance_then_ascent(kernel, data):
     env = data.draw(gait(kernel.row))
     stance = next(k for k in ROLE["stance"] if k.row is kernel.row)
     got = kernel.call(env)
-    td = g_flight.apex_to_touchdown(
-        env["b_y_apex"], env["b_xd_apex"], env["q_th_td"], env["q_r_td"], env["g_f"], env["ground"]
-    )
+    td = kernels.invoke(kernels.declaration("flight", "apex_to_touchdown"), env)
     assert td[-1] == OK
     st_env = {**env, **dict(zip(TOUCHDOWN, td[:4], strict=True))}
     sres = stance.call(st_env)
@@ -678,6 +678,7 @@ def test_apex_return_is_descent_then_stance_then_ascent(kernel, data):
         return
     expected = {**s, "apex_height": lo[0], "apex_speed": lo[1], "t_descent": td[4], "t_ascent": lo[2]}
     expected.update(step_length=td[5] + lo[4], foot_x=td[5], foot_y=env["ground"] - env["b_y_apex"])
+    expected.update(touchdown_q_th=td[2])
     want = np.array([expected[n] for n in kernel.outputs])
     assert np.array(got[:-1]).tobytes() == want.tobytes(), (got, want)
 
@@ -711,12 +712,14 @@ def batch_case(draw, kernel: Kernel) -> tuple[dict, np.ndarray]:
     rng = np.random.default_rng(draw(st.integers(0, 2**32 - 1), label="row seed"))
     th, vx, vy = rng.uniform(0.1, 0.7, n), rng.uniform(1.0, 8.0, n), -rng.uniform(0.05, 3.0, n)
     t = rng.uniform(0.0, 1.5, n) * math.pi * math.sqrt(env["m"] / env["k"])
+    rates = rng.uniform(-1.0, 1.0, n)  # a swinging leg (rad/s): retracting or protracting
     rows = np.empty((n, len(kernel.rows)))
     for i in range(n):
         vals = {
             **touchdown_from(th[i], vx[i], vy[i], env["q_r_td"]),
             **apex_from(th[i], vx[i], vy[i], env["q_r_td"], env["g_f"]),
             "t": t[i],
+            "retraction_rate": rates[i],
         }
         rows[i] = [vals[a] for a in kernel.rows]
     for i, j in zip(*np.nonzero(rng.random(rows.shape) < 0.25), strict=True):
@@ -1035,7 +1038,7 @@ def test_regression_underflow_is_a_status(kernel):
     ("name", "args"),
     [
         ("liftoff_to_apex", (1.0, 1e200, -0.1, 0.0, 9.81, 1.0)),
-        ("apex_to_touchdown", (1.0, 1e300, 0.3, 1e-10, 9.81, 0.0)),
+        ("apex_to_touchdown", (1.0, 1e300, 0.3, 1e-10, 9.81, 0.0, 0.0)),
     ],
 )
 def test_regression_flight_overflow_is_numerical_range(name, args):

@@ -17,9 +17,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
-from slipmaps.generated import flight as gen_flight
 from slipmaps.generated import slip_model as gen
 from slipmaps.generated.status import MESSAGES, Status
+from slipmaps.runtime.api import model
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from slipmaps.runtime.exact import reference as sim
 from slipmaps.runtime.exact.reference import (
@@ -410,8 +410,10 @@ def test_random_valid_inputs_never_raise(params, q_rd, q_th, q_thd, height, spee
 def test_flight_kernel_reports_apex_too_low():
     # The simulator checks this itself (so no NaN state reaches the stance), but the generated
     # kernel must agree: an apex below the touchdown height is APEX_TOO_LOW, not OK with NaNs.
-    out = gen_flight.apex_to_touchdown(0.9, 5.0, 0.4, 1.0, 9.81, 0.0)
-    assert Status(int(out[-1])) == Status.APEX_TOO_LOW, out
+    status, out = model.call(
+        "apex_to_touchdown", b_y_apex=0.9, b_xd_apex=5.0, q_th_td=0.4, q_r_td=1.0, g_f=9.81
+    )
+    assert status == Status.APEX_TOO_LOW, out
 
 
 def test_vertical_hop_stays_vertical():

@@ -1,13 +1,7 @@
 """docs/adding_a_map.md followed step by step in a copy of the project (issue 20): the page adds a map,
 ``geyer-angle2``, and this test does what the page says in a temporary copy of the checkout.
 
-The copy holds the files of ``git ls-files`` (the worktree's content, uncommitted edits included).
-It is importable as ``slipmaps`` the way a non-editable install lays the package out
-(site/slipmaps/{the files of runtime/public, derive, generated, runtime}), the directories linked to
-the copy's, so that ``slipmaps generate`` finds the copy as its checkout (``derive/``'s parent). Every
-command runs in a subprocess with that site first on PYTHONPATH (before the editable install of the
-real checkout) and numba's cache in the temporary directory (NUMBA_CACHE_DIR): nothing is written
-into the real checkout or its cache.
+The copy and how commands run in it: tests/checkout.py.
 
 The steps are the page's marked blocks (``<!-- tutorial: MARK -->`` before the fence, which the site
 does not show and tests/test_readme.py leaves out, :data:`documents.TUTORIAL`): step 1 writes the
@@ -28,17 +22,12 @@ Marked slow: CI runs it, ``-m "not slow"`` skips it.
 
 from __future__ import annotations
 
-import json
 import math
-import os
-import shlex
-import shutil
-import subprocess
-import sys
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
+from checkout import Checkout, copy_tracked, tracked
 from documents import ROOT, tutorial_steps
 
 PAGE = "docs/adding_a_map.md"
@@ -49,75 +38,12 @@ NOT_RUN = {"accuracy (not run: minutes)", "tests (not run: minutes)"}
 #: What the test does with the others (the order of the page).
 RUN = ("write derive/maps/geyer_angle2.py", "check", "generate", "list", "use", "compare", "compare output")
 REMOVE = "remove"
-TIMEOUT = 900
 
 pytestmark = pytest.mark.slow
 
 
 def test_the_page_marks_the_steps_the_test_follows():
     assert set(STEPS) == {*RUN, *NOT_RUN, REMOVE}, list(STEPS)
-
-
-def _tracked() -> list[str]:
-    """The files of the checkout (``git ls-files``), those of the worktree."""
-    done = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True)
-    if done.returncode != 0 or shutil.which("git") is None:
-        pytest.skip(f"not a git checkout: {done.stderr.decode()[-200:]}")
-    out = done.stdout
-    return [p for p in out.decode().split("\0") if p and (ROOT / p).is_file()]
-
-
-def _copy(dest: Path) -> Path:
-    for rel in _tracked():
-        (dest / rel).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(ROOT / rel, dest / rel)
-    return dest
-
-
-def _site(copy: Path, site: Path) -> Path:
-    """The package ``slipmaps`` of a non-editable install, its files linked to ``copy``'s."""
-    pkg = site / "slipmaps"
-    pkg.mkdir(parents=True)
-    for f in (copy / "runtime" / "public").glob("*.py"):
-        (pkg / f.name).symlink_to(f)
-    for sub in ("derive", "generated", "runtime"):
-        (pkg / sub).symlink_to(copy / sub, target_is_directory=True)
-    return site
-
-
-class Checkout:
-    """A copy of the project at ``root`` (importable from ``site``) and the commands of the page run
-    in it, numba's cache in ``cache``."""
-
-    def __init__(self, root: Path, site: Path, cache: Path):
-        self.root = root
-        self.env = {
-            **os.environ,
-            "PYTHONPATH": str(_site(root, site)),
-            "NUMBA_CACHE_DIR": str(cache),
-            "PYTHONHASHSEED": "0",
-            "MPLBACKEND": "Agg",
-        }
-
-    def _run(self, argv: list[str]) -> str:
-        done = subprocess.run(
-            argv, cwd=self.root, env=self.env, capture_output=True, text=True, timeout=TIMEOUT
-        )
-        assert done.returncode == 0, (argv[2:], done.stdout[-2000:], done.stderr[-3000:])
-        return done.stdout
-
-    def commands(self, code: str) -> str:
-        """The lines of a bash block (``slipmaps ...`` through this interpreter); their output."""
-        out = ""
-        for line in code.splitlines():
-            words = shlex.split(line, comments=True)
-            if words:
-                out += self._run([sys.executable, "-m", *words] if words[0] == "slipmaps" else words)
-        return out
-
-    def python(self, code: str, then: str = "") -> dict:
-        """A python block, then ``then`` (which prints JSON on the last line of the output)."""
-        return json.loads(self._run([sys.executable, "-c", code + "\n" + then]).splitlines()[-1])
 
 
 #: After the page's Python block: what the test asserts about it, from the same process.
@@ -138,7 +64,7 @@ print(_json.dumps({
 @pytest.fixture(scope="module")
 def followed(tmp_path_factory) -> dict:
     base = tmp_path_factory.mktemp("tutorial")
-    copy = _copy(base / "checkout")
+    copy = copy_tracked(base / "checkout")
     here = Checkout(copy, base / "site", base / "numba")
     results: dict = {}
     with ThreadPoolExecutor(1) as pool:
@@ -224,11 +150,11 @@ def test_removing_it_leaves_only_what_generate_rewrites(followed):
     checkout's own sources: test_codegen.py checks that they give the committed files)."""
     removed: Path = followed["removed"]
     wrote = {line.removeprefix("wrote ") for line in followed["generate"].splitlines()}
-    differ = {rel for rel in _tracked() if (removed / rel).read_bytes() != (ROOT / rel).read_bytes()}
+    differ = {rel for rel in tracked() if (removed / rel).read_bytes() != (ROOT / rel).read_bytes()}
     assert differ <= wrote and "README.md" in differ, sorted(differ - wrote)
     extra = {
         str(p.relative_to(removed))
         for p in removed.rglob("*")
         if p.is_file() and "__pycache__" not in p.parts
-    } - set(_tracked())
+    } - set(tracked())
     assert extra == {"generated/geyer_angle2.py", "generated/geyer_angle2_jacobian.py"}

@@ -1,8 +1,9 @@
 """Ballistic flight events (report sections 2.1-2.2.2), solved from :func:`mechanics.ballistic_flight`.
 
-Apex -> touchdown: the body falls from the apex (b_xd = b_xd_apex, b_yd = 0) until its height
-equals ground + q_r_td cos q_th_td, the height at which a leg held at angle q_th_td and length
-q_r_td touches ground ``ground`` higher than the ground under the apex (flat ground: 0). Liftoff ->
+Apex -> touchdown: the body falls from the apex (b_xd = b_xd_apex, b_yd = 0) while the leg, at
+length q_r_td, swings at ``retraction_rate`` from q_th_td, until the foot touches ground ``ground``
+higher than the ground under the apex (flat ground: 0; a leg held still: b_y = ground + q_r_td cos
+q_th_td). Liftoff ->
 apex: the body rises until b_yd = 0; heights after liftoff are above the ground the foot stood on.
 """
 
@@ -12,6 +13,8 @@ from functools import cache
 
 import sympy as sp
 
+from ..catalog import APEX_ARGS, DIRECTION, PARAMS, POLAR
+from ..ir import Arg, Field, Group, Guard, Iterate, Kernel, Stage, positive, real, sym
 from ..symbols import (
     b_x,
     b_xd,
@@ -19,41 +22,89 @@ from ..symbols import (
     b_y,
     b_y_apex,
     b_yd,
-    ground,
+    g_f,
+    q_r,
     q_r_td,
+    q_rd,
+    q_th,
     q_th_td,
+    q_thd,
     t,
 )
 from . import mechanics
 
+#: The apex-return inputs (derive/params.py's rows) as kernel arguments, by name.
+INPUTS = {a.name: a for a in APEX_ARGS}
+#: The inputs the descent reads besides the apex and the touchdown angle: its kernel's last arguments.
+DESCENT_INPUTS = ("ground", "retraction_rate")
+
+#: Newton passes allowed for the touchdown time of a swinging leg (quadratic, monotone convergence:
+#: a few passes at the rates of running; one for a leg held still).
+TOUCHDOWN_PASSES = 50
+
 
 @cache
 def apex_to_touchdown():
-    """Descent time and touchdown polar state from an apex state and a touchdown leg posture.
+    """Descent time and touchdown polar state from an apex state and a swinging leg.
 
-    Returns a dict with the time of flight ``t_flight`` (positive root of b_y(t) = ground + q_r_td
-    cos q_th_td), the fall height ``drop`` that must be positive, the polar touchdown state, and
-    ``foot_x``, the toe's horizontal position relative to the apex.
+    After the apex the leg angle is ``q_th(t) = q_th_td + retraction_rate * t`` (swing-leg
+    retraction, Seyfarth, Geyer and Herr 2003; a rate of 0 holds the leg at ``q_th_td``) at length
+    ``q_r_td``; touchdown is the time the foot meets the ground ``ground`` higher than the ground
+    under the apex: the root of the foot's height above that ground,
+
+        f(t) = b_y(t) - ground - q_r_td cos q_th(t)
+             = (g_f/2) (t0 - t) (t0 + t) + q_r_td (cos q_th_td - cos q_th(t)),
+
+    with ``t0 = sqrt(2 drop / g_f)`` the closed-form root of a leg held still (report section 2.1;
+    ``drop``, the foot's height above the ground at the apex, must be positive). With
+    ``|retraction_rate| <= sqrt(g_f/q_r_td)`` (3.1 rad/s for a 1 m leg; swing-leg retraction in
+    running is 0.5-2 rad/s) f is concave, ``f'' = -g_f + q_r_td rate^2 cos q_th(t) <= 0``: positive at
+    the apex, it has one positive root, the touchdown, and Newton's method converges to it
+    monotonically from any start at or after it. The start is ``t0`` when the foot is on or below
+    the ground then, else the time the body is ``q_r_td`` below the ground (where f <= 0). The
+    second form of f is exactly 0 at ``t = t0`` for a rate of 0, so Newton's method returns the
+    closed form bit for bit there, and its one pass carries the derivative with respect to the rate.
+
+    Returns a dict: ``drop`` (an expression), ``t0``; ``residual`` and ``slope`` (f and df/dt at the
+    symbol ``t``); ``angle`` (q_th at ``t``); the polar touchdown ``state`` and ``foot_x`` (the
+    toe's horizontal position relative to the apex) at the time ``t`` and the angle symbol
+    ``angle_symbol``.
     """
-    _, xd_t, y_t, yd_t = mechanics.ballistic_flight()
-    apex = {b_xd: b_xd_apex, b_y: b_y_apex, b_yd: 0}
-    y_td = mechanics.body_position(q_r_td, q_th_td)[1]
-    drop = sp.Symbol("drop", positive=True)
-    roots = sp.solve(sp.Eq(y_t.subs(apex), b_y_apex - drop), t)
-    t_fl = [r for r in roots if r.is_positive][0]
-    velocity = {b_xd: xd_t.subs(apex).subs(t, t_fl), b_yd: yd_t.subs(apex).subs(t, t_fl)}
-    pos = mechanics.body_position(q_r_td, q_th_td)
+    ground, rate = INPUTS["ground"].symbol, INPUTS["retraction_rate"].symbol
+    # the height, above the ground under the apex, at which the foot touches down
+    contact = ground
+    # the leg angle a time t after the apex
+    angle = q_th_td + rate * t
+    x_t, xd_t, y_t, yd_t = mechanics.ballistic_flight()
+    apex = {b_x: 0, b_xd: b_xd_apex, b_y: b_y_apex, b_yd: 0}
+    drop = b_y_apex - contact - mechanics.body_position(q_r_td, q_th_td)[1]
+    drop_symbol = sp.Symbol("drop", positive=True)
+    t0 = [r for r in sp.solve(sp.Eq(y_t.subs(apex), b_y_apex - drop_symbol), t) if r.is_positive][0]
+    t0_symbol = sp.Symbol("t0", positive=True)
+    g = sp.sympify(y_t.subs(apex)).diff(t, 2) * -1  # the flight gravity, from the derived flight
+    residual = g / 2 * (t0_symbol - t) * (t0_symbol + t) + q_r_td * (sp.cos(q_th_td) - sp.cos(angle))
+    check = sp.simplify(
+        (y_t.subs(apex) - contact - mechanics.body_position(q_r_td, angle)[1]).subs(drop_symbol, drop)
+        - residual.subs(t0_symbol, t0).subs(drop_symbol, drop)
+    )
+    if check != 0:
+        raise AssertionError(f"apex_to_touchdown: the residual's two forms differ by {check}")
+    th = sp.Symbol("touchdown_angle", real=True)
+    pos = mechanics.body_position(q_r_td, th)
     # The touchdown polar rates follow from the derived Cartesian -> polar map at the touchdown posture.
     _, rd_expr, _, thd_expr = mechanics.cartesian_to_polar()
-    at_td = {b_x: pos[0], b_y: pos[1], **velocity}
-    q_rd_td = sp.simplify(rd_expr.subs(at_td))
-    q_thd_td = sp.simplify(thd_expr.subs(at_td))
+    at_td = {b_x: pos[0], b_y: pos[1], b_xd: xd_t.subs(apex), b_yd: yd_t.subs(apex)}
     return {
-        "drop": b_y_apex - ground - y_td,
-        "t_flight": t_fl,
-        "foot_x": sp.simplify(xd_t.subs(apex).subs(t, t_fl) * t_fl - pos[0]),
-        "drop_symbol": drop,
-        "state": (q_r_td, q_rd_td, q_th_td, q_thd_td),
+        "drop": drop,
+        "drop_symbol": drop_symbol,
+        "t0": t0,
+        "t0_symbol": t0_symbol,
+        "residual": residual,
+        "slope": residual.diff(t),
+        "angle": angle,
+        "angle_symbol": th,
+        "foot_x": sp.simplify(x_t.subs(apex) - pos[0]),
+        "state": (q_r_td, sp.simplify(rd_expr.subs(at_td)), th, sp.simplify(thd_expr.subs(at_td))),
     }
 
 
@@ -74,3 +125,159 @@ def liftoff_to_apex():
         "dx_flight": sp.simplify((x_t - b_x).subs(t, t_apex)),
         "apex_b_x": sp.simplify(x_t.subs(t, t_apex)),
     }
+
+
+#: Liftoff with a horizontal speed against the step's direction by more than BACKWARD_TOLERANCE *
+#: sqrt(g_f q_r) is backward (the body reversed in the stance); a hop in place (direction 0) may lift
+#: off either way.
+BACKWARD_TOLERANCE = 1e-9
+
+
+@cache
+def flight_kernels() -> dict[str, Kernel]:
+    """Ballistic flight between apex and stance events (exact in every apex-return map), by name."""
+    atd = apex_to_touchdown()
+    drop, t0, angle = atd["drop_symbol"], atd["t0_symbol"], atd["angle_symbol"]
+    t_td, slope, t_far, t_start = sym("t_td"), sym("foot_slope"), sym("t_far"), sym("t_start")
+    at = {t: t_td}
+    q_r_td = PARAMS["q_r_td"].symbol
+    apex_to_td = Kernel(
+        name="apex_to_touchdown",
+        summary="Ballistic descent from an apex to touchdown with the leg at q_r_td swinging from q_th_td at "
+        "retraction_rate.",
+        equations=("sec2.1-touchdown", "sec2.2.2"),
+        args=(
+            APEX_ARGS[0],
+            Arg(b_xd_apex, "horizontal apex speed [m/s], signed"),
+            APEX_ARGS[2],
+            Arg(q_r_td, "touchdown leg length [m], > 0", positive(q_r_td)),  # l0 is not an argument here
+            PARAMS["g_f"],
+            *(INPUTS[name] for name in DESCENT_INPUTS),
+        ),
+        steps=(
+            Stage(
+                ((drop, atd["drop"]),),
+                (Guard(real(drop) > 0, "APEX_TOO_LOW", "the foot above the touchdown ground at the apex"),),
+            ),
+            Stage(
+                ((t0, atd["t0"]),),
+                (
+                    Guard(
+                        real(INPUTS["retraction_rate"].symbol) ** 2 * real(q_r_td) <= real(g_f),
+                        "INVALID_INPUT",
+                        "|retraction_rate| <= sqrt(g_f/q_r_td): the foot's height concave in time",
+                    ),
+                ),
+                comment="the descent time of a leg held still (section 2.1)",
+            ),
+            Stage(
+                (
+                    (t_far, sp.sqrt(2 * (drop + q_r_td * sp.cos(q_th_td) + q_r_td) / g_f)),
+                    (t_start, sp.Piecewise((t0, atd["residual"].subs(t, t0) <= 0), (t_far, True))),
+                ),
+                comment="a start at or after the touchdown: t0 if the foot is on or below the ground then, "
+                "else the time the body is q_r_td below the ground",
+            ),
+            Iterate(
+                state=((t_td, t_start),),
+                evaluate=(
+                    Stage(
+                        ((slope, atd["slope"].subs(at)),),
+                        (Guard(slope < 0, "NO_TOUCHDOWN", "the foot descends toward the ground"),),
+                    ),
+                ),
+                body=(),
+                update=(t_td - atd["residual"].subs(at) / slope,),
+                max_iter=sp.Integer(TOUCHDOWN_PASSES),
+                tol=sp.Float(1e-12),
+                scales=(t0,),
+                count=sym("touchdown_passes"),
+                fail_status="NOT_CONVERGED",
+                comment="Newton's method on the foot's height (concave: monotone from the right)",
+            ),
+            Stage(
+                ((angle, atd["angle"].subs(at)),),
+                (Guard(sp.Abs(angle) < sp.pi / 2, "NO_TOUCHDOWN", "the leg above the horizontal"),),
+                comment="the leg angle at touchdown",
+            ),
+            Stage(
+                tuple(
+                    zip(
+                        (
+                            sym(n)
+                            for n in ("touchdown_q_r", "touchdown_q_rd", "touchdown_q_th", "touchdown_q_thd")
+                        ),
+                        (e.subs(at) for e in atd["state"]),
+                        strict=True,
+                    )
+                )
+                + ((sym("t_flight"), t_td), (sym("foot_x"), atd["foot_x"].subs(at))),
+                comment="touchdown state from the derived Cartesian -> polar map",
+            ),
+        ),
+        outputs=Group(
+            "",
+            (
+                Group("touchdown", POLAR, "polar state at touchdown"),
+                Field("t_flight", "time from the apex to touchdown", "s"),
+                Field(
+                    "foot_x",
+                    "horizontal position of the toe at touchdown relative to the apex",
+                    "m",
+                    odd=True,
+                ),
+            ),
+        ),
+        module="flight",
+    )
+    lta = liftoff_to_apex()
+    cart = tuple(zip((b_x, b_xd, b_y, b_yd), lta["liftoff_cartesian"], strict=True))
+    lo_to_apex = Kernel(
+        name="liftoff_to_apex",
+        summary="Ballistic ascent from a polar liftoff state to the next apex.",
+        equations=("sec2.1-apex", "sec2.2.2"),
+        args=(
+            Arg(q_r, "liftoff leg length q_r [m], > 0", positive(q_r)),
+            Arg(q_rd, "leg length rate q_rd [m/s]"),
+            Arg(q_th, "leg angle q_th from the vertical, counterclockwise positive [rad]"),
+            Arg(q_thd, "leg angle rate q_thd [rad/s]"),
+            PARAMS["g_f"],
+            DIRECTION,
+        ),
+        steps=(
+            Stage(
+                cart,
+                (
+                    Guard(b_yd > 0, "LIFTOFF_DOWNWARD", "liftoff requires an upward velocity"),
+                    Guard(
+                        DIRECTION.symbol * b_xd >= -BACKWARD_TOLERANCE * sp.sqrt(real(g_f) * real(q_r)),
+                        "LIFTOFF_BACKWARD",
+                        "the body must not move against the step's direction (a hop in place: either way)",
+                    ),
+                ),
+                comment="Cartesian liftoff state relative to the toe",
+            ),
+            Stage(
+                (
+                    (sym("apex_b_y"), lta["b_y_apex"]),
+                    (sym("apex_b_xd"), lta["b_xd_apex"]),
+                    (sym("t_flight"), lta["t_flight"]),
+                    (sym("dx_flight"), lta["dx_flight"]),
+                    (sym("apex_b_x"), lta["apex_b_x"]),
+                ),
+                comment="apex where b_yd(t) = 0",
+            ),
+        ),
+        outputs=Group(
+            "",
+            (
+                Field("apex_b_y", "next apex height above the ground", "m"),
+                Field("apex_b_xd", "next apex horizontal speed", "m/s", odd=True),
+                Field("t_flight", "time from liftoff to the apex", "s"),
+                Field("dx_flight", "horizontal distance travelled from liftoff to the apex", "m", odd=True),
+                Field("apex_b_x", "horizontal position of the next apex relative to the toe", "m", odd=True),
+            ),
+        ),
+        module="flight",
+    )
+    return {"apex_to_touchdown": apex_to_td, "liftoff_to_apex": lo_to_apex}

@@ -9,15 +9,11 @@ from functools import cache
 
 import sympy as sp
 
-from ..catalog import APEX_ARGS, DIRECTION, GROUND, PARAMS, POLAR
-from ..ir import Arg, Call, Field, Group, Guard, Kernel, Layout, Module, Stage, positive, real, sym
-from ..symbols import b_x, b_xd, b_xd_apex, b_y, b_yd, g_f, k, q_r, q_rd, q_th, q_thd
-from . import flight, mechanics, simulation
-
-#: Liftoff with a horizontal speed against the step's direction by more than BACKWARD_TOLERANCE *
-#: sqrt(g_f q_r) is backward (the body reversed in the stance); a hop in place (direction 0) may lift
-#: off either way.
-BACKWARD_TOLERANCE = 1e-9
+from ..catalog import PARAMS
+from ..ir import Arg, Call, Field, Group, Kernel, Layout, Module, Stage, real, sym
+from ..symbols import b_x, b_xd, b_y, b_yd, k, q_r, q_rd, q_th, q_thd
+from . import mechanics, simulation
+from .flight import flight_kernels
 
 _STIFFNESS = Arg(k, "leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)")
 _MODEL_PARAMS = (PARAMS["m"], PARAMS["l0"], _STIFFNESS, PARAMS["g_s"])
@@ -185,111 +181,6 @@ def slip_model_kernels() -> tuple[Kernel, ...]:
             mechanics.cartesian_to_polar(),
         ),
     )
-
-
-@cache
-def flight_kernels() -> dict[str, Kernel]:
-    """Ballistic flight between apex and stance events (exact in every apex-return map), by name."""
-    atd = flight.apex_to_touchdown()
-    drop = atd["drop_symbol"]
-    r_out, rd_out, th_out, thd_out = atd["state"]
-    q_r_td = PARAMS["q_r_td"].symbol
-    apex_to_td = Kernel(
-        name="apex_to_touchdown",
-        summary="Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td).",
-        equations=("sec2.1-touchdown", "sec2.2.2"),
-        args=(
-            APEX_ARGS[0],
-            Arg(b_xd_apex, "horizontal apex speed [m/s], signed"),
-            APEX_ARGS[2],
-            Arg(q_r_td, "touchdown leg length [m], > 0", positive(q_r_td)),  # l0 is not an argument here
-            PARAMS["g_f"],
-            GROUND,
-        ),
-        steps=(
-            Stage(
-                ((drop, atd["drop"]),),
-                (Guard(real(drop) > 0, "APEX_TOO_LOW", "touchdown height below apex"),),
-            ),
-            Stage(
-                tuple(
-                    zip(
-                        (
-                            sym(n)
-                            for n in ("touchdown_q_r", "touchdown_q_rd", "touchdown_q_th", "touchdown_q_thd")
-                        ),
-                        (r_out, rd_out, th_out, thd_out),
-                        strict=True,
-                    )
-                )
-                + ((sym("t_flight"), atd["t_flight"]), (sym("foot_x"), atd["foot_x"])),
-                comment="touchdown state from the derived Cartesian -> polar map",
-            ),
-        ),
-        outputs=Group(
-            "",
-            (
-                Group("touchdown", POLAR, "polar state at touchdown"),
-                Field("t_flight", "time from the apex to touchdown", "s"),
-                Field(
-                    "foot_x",
-                    "horizontal position of the toe at touchdown relative to the apex",
-                    "m",
-                    odd=True,
-                ),
-            ),
-        ),
-        module="flight",
-    )
-    lta = flight.liftoff_to_apex()
-    cart = tuple(zip((b_x, b_xd, b_y, b_yd), lta["liftoff_cartesian"], strict=True))
-    lo_to_apex = Kernel(
-        name="liftoff_to_apex",
-        summary="Ballistic ascent from a polar liftoff state to the next apex.",
-        equations=("sec2.1-apex", "sec2.2.2"),
-        args=(
-            Arg(q_r, "liftoff leg length q_r [m], > 0", positive(q_r)),
-            *_POLAR_ARGS[1:],
-            PARAMS["g_f"],
-            DIRECTION,
-        ),
-        steps=(
-            Stage(
-                cart,
-                (
-                    Guard(b_yd > 0, "LIFTOFF_DOWNWARD", "liftoff requires an upward velocity"),
-                    Guard(
-                        DIRECTION.symbol * b_xd >= -BACKWARD_TOLERANCE * sp.sqrt(real(g_f) * real(q_r)),
-                        "LIFTOFF_BACKWARD",
-                        "the body must not move against the step's direction (a hop in place: either way)",
-                    ),
-                ),
-                comment="Cartesian liftoff state relative to the toe",
-            ),
-            Stage(
-                (
-                    (sym("apex_b_y"), lta["b_y_apex"]),
-                    (sym("apex_b_xd"), lta["b_xd_apex"]),
-                    (sym("t_flight"), lta["t_flight"]),
-                    (sym("dx_flight"), lta["dx_flight"]),
-                    (sym("apex_b_x"), lta["apex_b_x"]),
-                ),
-                comment="apex where b_yd(t) = 0",
-            ),
-        ),
-        outputs=Group(
-            "",
-            (
-                Field("apex_b_y", "next apex height above the ground", "m"),
-                Field("apex_b_xd", "next apex horizontal speed", "m/s", odd=True),
-                Field("t_flight", "time from liftoff to the apex", "s"),
-                Field("dx_flight", "horizontal distance travelled from liftoff to the apex", "m", odd=True),
-                Field("apex_b_x", "horizontal position of the next apex relative to the toe", "m", odd=True),
-            ),
-        ),
-        module="flight",
-    )
-    return {"apex_to_touchdown": apex_to_td, "liftoff_to_apex": lo_to_apex}
 
 
 def role_form(kernel: Kernel, module: str = "model") -> Kernel:

@@ -3,10 +3,12 @@
 - :func:`stance_jacobian` (``name, params, touchdown``): rows are the stance outputs
   (``t_bottom``, ``t_stance``, ``bottom_*``, ``liftoff_*``, then the map's extras), columns the
   touchdown state ``q_r_td, q_rd_td, q_th_td, q_thd_td`` and the stiffness.
-- :func:`apex_return_jacobian` (``name, params, apex_height, apex_speed, touchdown_angle, ground=``):
-  rows are the apex-return outputs (``apex_height`` and ``apex_speed`` of the NEXT apex, the flight
-  and stance times, ``liftoff_*``, ``step_length``, ``foot_x``, ``foot_y``, extras), columns
-  ``apex_height, apex_speed, touchdown_angle, ground`` and the stiffness.
+- :func:`apex_return_jacobian` (``name, params, apex_height, apex_speed, touchdown_angle,
+  ground=, retraction_rate=``): rows are the apex-return outputs (``apex_height`` and
+  ``apex_speed`` of the NEXT apex, the flight and stance times, ``liftoff_*``, ``step_length``,
+  ``foot_x``, ``foot_y``, ``touchdown_q_th``, extras), columns the apex-return inputs
+  (derive/params.py: ``apex_height, apex_speed, touchdown_angle, ground, retraction_rate``) and
+  the stiffness.
 - :func:`stance_jacobian_batch`, :func:`apex_return_jacobian_batch`: the same over arrays, in
   parallel, a status per row.
 

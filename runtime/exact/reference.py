@@ -19,10 +19,13 @@ Conventions (report Table 1, SI units throughout)
 
 Events (report section 2.1)
 ---------------------------
-* Apex: ``b_yd = 0`` in flight. Touchdown: ``q_r = q_r_td`` while descending, which needs the apex
-  above the touchdown height ``ground + q_r_td cos q_th_td`` (else ``APEX_TOO_LOW``). The flight phases are
-  ballistic and solved in closed form by the generated kernels ``flight.apex_to_touchdown`` and
-  ``flight.liftoff_to_apex``.
+* Apex: ``b_yd = 0`` in flight. Touchdown: the foot of the leg (length ``q_r_td``, angle
+  ``q_th_td`` at the apex, swinging at ``retraction_rate`` after it) meets the ground, which needs
+  the apex above the touchdown height ``ground + q_r_td cos q_th_td`` (else ``APEX_TOO_LOW``). The
+  flight phases are ballistic, solved by the generated kernels ``flight.apex_to_touchdown`` (closed
+  form for a leg held still, Newton's method on the foot's height for a swinging one) and
+  ``flight.liftoff_to_apex``; the apex-return inputs beyond the apex and the angle (``ground``,
+  ``retraction_rate``, derive/params.py) go to the descent by name.
 * Bottom: ``q_rd`` crosses 0 upward during stance (end of compression). The state is continuous
   across the bottom, only the stiffness switches from ``k_c`` to ``k_d``; ``q_rd`` is set to exactly
   0 there (the event root has ``|q_rd|`` ~ 1e-15), so the stance energy jumps by
@@ -694,9 +697,10 @@ def simulate_step(
     atol: float = DEFAULT_ATOL,
     **inputs: float,
 ) -> StepResult:
-    """One exact step: apex ``(apex_height, apex_speed)`` -> next apex, leg held at ``q_th_td``,
-    touching down on ground ``ground`` higher than the ground under the apex; ``inputs`` the other
-    apex-return inputs by their kernel argument names (derive/params.py), passed to the descent.
+    """One exact step: apex ``(apex_height, apex_speed)`` -> next apex, leg at ``q_th_td`` at the
+    apex, touching down on ground ``ground`` higher than the ground under the apex; ``inputs`` the
+    other apex-return inputs by their kernel argument names (derive/params.py, ``retraction_rate``
+    among them), passed to the descent.
 
     The descent to the touchdown of a leg of length ``params.q_r_td`` at angle ``q_th_td`` and the
     ascent from liftoff to the next apex are ballistic with ``g_f`` (generated kernels); the stance
@@ -792,6 +796,7 @@ def step_values(r: StepResult) -> dict[str, float]:
         "step_length": r.step_length,
         "foot_x": r.foot_x,
         "foot_y": r.foot_y,
+        "touchdown_q_th": r.touchdown[2] if r.touchdown is not None else math.nan,
     }
 
 
