@@ -46,7 +46,7 @@ import numba
 import numpy as np
 import scipy
 import slipmaps
-from slipmaps.generated import flight as gen_flight
+from slipmaps.runtime.api import model
 from slipmaps.runtime.exact.reference import simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -94,9 +94,9 @@ def states(n: int, seed: int = 0) -> tuple[np.ndarray, ...]:
     rng = np.random.default_rng(seed)
     h, v, th = rng.uniform(1.0, 1.1, n), rng.uniform(3.0, 7.0, n), rng.uniform(0.30, 0.50, n)
     unique = min(n, 20_000)
-    td = np.array(
-        [gen_flight.apex_to_touchdown(h[i], v[i], th[i], P.q_r_td, P.g_f, 0.0)[:4] for i in range(unique)]
-    )
+    apex = {"b_y_apex": h[:unique], "b_xd_apex": v[:unique], "q_th_td": th[:unique]}
+    _, down = model.rows("apex_to_touchdown", **apex, q_r_td=P.q_r_td, g_f=P.g_f)
+    td = np.column_stack([down[f"touchdown_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd")])
     return h, v, th, np.ascontiguousarray(np.resize(td, (n, 4)))
 
 
@@ -238,16 +238,18 @@ def _kernel_loop(kernel, X, p, out):
 def kernel_seconds(info, h, v, th, repeat: int) -> tuple[float, float]:
     """CPU seconds of the scalar apex-return kernel and of its Jacobian kernel over the states, on
     one thread (best of ``repeat``): inputs and parameters by name from the index's layouts
-    (runtime/api/calls.py), the ground 0."""
+    (runtime/api/calls.py), the other inputs at their defaults (the ground 0, the leg held still)."""
+    from slipmaps.derive.params import APEX_INPUTS
     from slipmaps.runtime.api.calls import Call, kernel_functions, layout_rows
 
+    defaults = {r["arg"]: float(r["default"]) for r in APEX_INPUTS if "default" in r}
     call = Call.of(info.name, P, {})
     rows = {"b_y_apex": h, "b_xd_apex": v, "q_th_td": th}
     out = []
     for role in ("apex_return", "apex_return_jacobian"):
         spec = call.spec(role)
         kern = kernel_functions(spec)[0]
-        X, p = layout_rows(spec, call.record(spec), rows, {"ground": 0.0}, len(h))
+        X, p = layout_rows(spec, call.record(spec), rows, defaults, len(h))
         res = np.empty(spec.width)
         _kernel_loop(kern, X[:10], p[0], res)
         best = math.inf
