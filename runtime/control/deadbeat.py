@@ -277,8 +277,10 @@ class DeadbeatResult(SolveStatus):
 
     @property
     def touchdown_limit(self) -> float:
-        """The smallest touchdown angle magnitude [rad] at which the leg (length q_r_td) reaches the
-        ground from this apex: acos((apex height - ground) / q_r_td); 0 when every angle does."""
+        """The smallest touchdown angle magnitude [rad] at which the leg (length q_r_td, held still)
+        reaches the ground from this apex: acos((apex height - ground) / q_r_td), the touchdown
+        condition of report section 2.1 (the apex above ground + q_r_td cos q_th_td); 0 when every
+        angle does."""
         h, _, gr = self._apex
         ratio = (h - gr) / self._ctl.params.q_r_td
         return math.acos(ratio) if ratio < 1.0 else 0.0
