@@ -1,12 +1,59 @@
-"""Test configuration: under CI (``CI`` set), Hypothesis runs derandomized so a red run is reproducible.
+"""Test configuration: Hypothesis' profile, and numba's cache warmed once before the suite runs.
 
-Locally it explores new examples each run (and keeps failures in .hypothesis/).
+Hypothesis: every run prints, with a failing example, the ``@reproduce_failure`` line that replays
+it (``print_blob``), and no example fails for the machine's load (no deadline, no health check on
+slow generation): a failure is the code's, reproducible from what the run printed. Locally
+Hypothesis explores new examples each run (and keeps failures in .hypothesis/); under CI (``CI``
+set) it runs derandomized, so a red run is reproducible as it is.
+
+numba: on an empty cache most of a first run is numba compiling the kernels, which every xdist
+worker did again for itself. When the run is the whole suite (no test paths given, or the tests
+directory), the controller (or the only process, without xdist) first compiles every kernel module
+that is missing from the cache, in as many processes as the run has workers (``tests/warmup.py``);
+the workers then load them. With a warm cache that is a check of the cache's indexes (about a
+second) and nothing else. ``SLIPMAPS_WARMUP=0`` turns it off, ``=1`` forces it for any paths.
 """
 
+from __future__ import annotations
+
 import os
+from pathlib import Path
 
-from hypothesis import settings
+import pytest
+from hypothesis import HealthCheck, settings
 
-settings.register_profile("ci", derandomize=True, print_blob=True)
-if os.environ.get("CI"):
-    settings.load_profile("ci")
+settings.register_profile(
+    "suite", print_blob=True, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.register_profile("ci", parent=settings.get_profile("suite"), derandomize=True)
+settings.load_profile("ci" if os.environ.get("CI") else "suite")
+
+TESTS = Path(__file__).resolve().parent
+
+
+def _warmup_processes(config: pytest.Config) -> int:
+    """How many processes warm numba's cache before the tests (0: none): the xdist workers' count in
+    the controller, the cores without xdist; none in a worker, for a subset of the suite, or when
+    only collecting."""
+    if os.environ.get("PYTEST_XDIST_WORKER") or config.option.collectonly:
+        return 0
+    wanted = os.environ.get("SLIPMAPS_WARMUP", "")
+    if wanted == "0":
+        return 0
+    whole = all(Path(str(a).split("::")[0]).resolve() in (TESTS, TESTS.parent) for a in config.args)
+    if wanted != "1" and not whole:
+        return 0
+    workers = getattr(config.option, "numprocesses", None) or 0  # xdist's -n, resolved ("auto": cores)
+    cores = os.cpu_count() or 1
+    return max(1, min(workers, cores) if workers else cores)
+
+
+@pytest.hookimpl(tryfirst=True)  # before xdist starts its workers (its own hook runs last)
+def pytest_sessionstart(session: pytest.Session) -> None:
+    processes = _warmup_processes(session.config)
+    if not processes:
+        return
+    import warmup
+
+    terminal = session.config.pluginmanager.get_plugin("terminalreporter")
+    warmup.warm(processes, say=terminal.write_line if terminal is not None else print)

@@ -39,8 +39,10 @@ the flag as typed. Every path a command writes (``compare --plot``, ``gait --fig
 probe file created and removed) before any work. A reader that closes standard output early
 (``slipmaps maps | head -1``) ends any command quietly with exit status :data:`BROKEN_PIPE`;
 Ctrl-C ends any command with one line and :data:`INTERRUPTED` (130). An OSError while writing is
-one line naming the path and the reason, exit 2 (``paths.writing``).
-The map names and options come from the generated index.
+one line naming the path and the reason, exit 2 (``paths.writing``). On a terminal, numba compiling
+a kernel on its first use (an empty or stale cache) is one line on standard error with its seconds
+(:func:`~slipmaps.runtime.api.progress.compile_notices`; none with ``--no-progress`` or when
+standard error is piped). The map names and options come from the generated index.
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ from pathlib import Path
 
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
+from ..api.progress import compile_notices
 from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import report as report_cli
 from . import run as run_cli
@@ -450,7 +453,10 @@ def _run(argv: list[str] | None) -> int:
         "report": report_cli.run,
     }
     try:
-        code = handlers[args.command](args)
+        # numba compiling a kernel on first use (tens of seconds on an empty cache) is a line on a
+        # terminal's standard error, for every command (runtime/api/progress.py)
+        with compile_notices(enabled=False if getattr(args, "no_progress", False) else None):
+            code = handlers[args.command](args)
     except (ValueError, TypeError) as exc:
         print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
         return 2

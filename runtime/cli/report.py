@@ -3,8 +3,10 @@
 ``slipmaps report`` runs every study of ``slipmaps accuracy`` (accuracy, convergence, stiffness,
 stability, reproductions), then the control evaluation (``slipmaps run --evaluate``), then writes
 docs/sections.md and its figure from the records (:mod:`slipmaps.runtime.report.sections`): into
-the checkout's docs/ or ``--out DIR``. It takes about ten minutes once the kernels are compiled;
-each stage shows a progress bar on standard error (``--no-progress``: none).
+the checkout's docs/ or ``--out DIR``. It takes about ten minutes once the kernels are compiled.
+Standard error shows which stage runs, of how many (:class:`Stages`: one line per stage, on a
+terminal with the time so far), and on a terminal each stage's progress bar (``--no-progress``:
+none).
 
 - ``--render-only``: no measurement; the page from the records already in docs/ (or ``--out``),
   as the site's build does (seconds).
@@ -20,11 +22,13 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
 from pathlib import Path
 
 from ..api.paths import writable_dir
+from ..api.progress import is_terminal
 
-__all__ = ["QUICK_MAPS", "add_parser", "run"]
+__all__ = ["QUICK_MAPS", "Stages", "add_parser", "run"]
 
 #: The maps of ``--quick`` (with the baseline map, which the studies add).
 QUICK_MAPS = ("gravity-type5", "iterative")
@@ -61,8 +65,37 @@ def _out(args: argparse.Namespace) -> Path:
     return docs
 
 
-def _stage(i: int, n: int, what: str) -> None:
-    print(f"slipmaps report: [{i}/{n}] {what}", file=sys.stderr, flush=True)
+class Stages:
+    """``slipmaps report``'s progress on standard error: a line as each of its ``n`` stages starts,
+    ``slipmaps report: [i/n] what`` (the studies one by one, the control evaluation, the page), so
+    a log holds one line per stage; on a terminal each line also gives the time since the report
+    started, and a last line the total. The stages' own bars and numba's compile notices come
+    between the lines on a terminal only."""
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        self.i = 0
+        self.start = time.perf_counter()
+
+    def __call__(self, what: str) -> None:
+        self.i += 1
+        line = f"slipmaps report: [{self.i}/{self.n}] {what}"
+        if is_terminal(sys.stderr):
+            line += f" ({_clock(time.perf_counter() - self.start)} so far)"
+        print(line, file=sys.stderr, flush=True)
+
+    def done(self) -> None:
+        if is_terminal(sys.stderr):
+            print(
+                f"slipmaps report: {self.n} stages in {_clock(time.perf_counter() - self.start)}",
+                file=sys.stderr,
+                flush=True,
+            )
+
+
+def _clock(seconds: float) -> str:
+    m, s = divmod(int(round(seconds)), 60)
+    return f"{m} min {s:02d} s" if m else f"{s} s"
 
 
 def run(args: argparse.Namespace) -> int:
@@ -93,19 +126,23 @@ def _run(args: argparse.Namespace) -> int:
         raise ValueError("report runs the control scenarios of a checkout's examples/: run it from one")
     from ..control.report import write as write_control
     from ..studies.runner import run as run_studies
+    from ..studies.runner import studies
 
-    _stage(1, 3, "the studies of slipmaps accuracy")
     maps = list(QUICK_MAPS) if args.quick else None  # chosen: with the baseline map
-    written += run_studies(out / "accuracy.md", maps, show, plain_names=True)  # the page reads <study>.json
-    _stage(2, 3, "the control evaluation")
+    stage = Stages(len(studies(maps)) + 2)  # the studies, the control evaluation, the page
+    written += run_studies(  # the page reads <study>.json
+        out / "accuracy.md", maps, show, plain_names=True, on_study=lambda s: stage(f"the {s.name} study")
+    )
+    stage("the control evaluation")
     written += write_control(out, root / "examples", quick=args.quick, progress=show)
-    _stage(3, 3, "sections 6-8")
+    stage("sections 6-8")
     records = sections.load(out)
     if args.quick:
         import json
 
         records["control"] = json.loads((out / "control_quick.json").read_text(encoding="utf-8"))
     written += sections.write(out, records=records, strict=not args.quick)
+    stage.done()
     for path in written:
         print(f"wrote {path}")
     return 0

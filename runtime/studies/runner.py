@@ -9,6 +9,7 @@ maps writes nothing (:meth:`.study.Study.applies`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from ..api import index
@@ -62,17 +63,24 @@ def report_path(out: str | Path, study: Study, plain_names: bool = True) -> Path
 
 
 def run(
-    out: str | Path, map_names=None, show_progress: bool | None = None, plain_names: bool | None = None
+    out: str | Path,
+    map_names=None,
+    show_progress: bool | None = None,
+    plain_names: bool | None = None,
+    on_study: Callable[[Study], None] | None = None,
 ) -> list[Path]:
     """Measure and write every study (:func:`studies`) of all maps, or of ``map_names`` with the
     baseline map for reference: the accuracy report ``out`` (+ .json, .png) and beside it the others
     (:func:`report_path`), named ``<name>.md`` when ``plain_names`` (default: for all maps only; the
     reduced report of ``slipmaps report --quick`` reads its chosen maps' records by those names), else
-    ``<name>_<out's stem>.md``. Returns the written paths: per study its report, record and figure."""
+    ``<name>_<out's stem>.md``; ``on_study(study)`` is called as each study starts (``slipmaps
+    report``'s progress). Returns the written paths: per study its report, record and figure."""
     chosen = studies(map_names)
     plain = map_names is None if plain_names is None else plain_names
     Path(out).parent.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
     for study in chosen:
+        if on_study is not None:
+            on_study(study)
         written += write(study, report_path(out, study, plain), show_progress)
     return written
