@@ -471,7 +471,7 @@ def _bounds(params: SlipParams, controls: tuple[str, ...], bounds) -> dict[str, 
     return out
 
 
-_OPTIONS = ("tol", "jacobian", "scan", "max_evaluations")
+_OPTIONS = ("tol", "jacobian", "scan", "max_evaluations", "budget")
 
 
 def _finite(name: str, x) -> float:
@@ -490,7 +490,8 @@ class Deadbeat:
     the controls (the angle's default: :func:`~slipmaps.runtime.control.deadbeat.default_angle`; the
     stiffness's: ``params``, which are also the nominal values of the least-change preference) and
     the fixed value of a quantity that is not a control (the touchdown angle when only stiffnesses
-    are controlled).
+    are controlled). ``budget=False`` leaves out the energy budget (``energy_low``, ``energy_high``,
+    ``authority`` NaN): two map evaluations fewer per solve (a swing policy's solves, :mod:`.swing`).
     """
 
     def __init__(
@@ -504,6 +505,7 @@ class Deadbeat:
         jacobian: str = "broyden",
         scan: int = SCAN,
         max_evaluations: int = MAX_EVALUATIONS,
+        budget: bool = True,
         **options,
     ):
         check_params(params)
@@ -520,6 +522,8 @@ class Deadbeat:
         self.bounds = _bounds(params, self.controls, bounds)
         if jacobian not in ("broyden", "newton"):
             raise ValueError(f"jacobian must be 'broyden' or 'newton', got {jacobian!r}")
+        if not isinstance(budget, bool):
+            raise ValueError(f"budget must be True or False, got {budget!r}")
         tol = real("tol", tol)
         if not tol > 0.0:
             raise ValueError(f"tol must be positive, got {num(tol)}")
@@ -541,7 +545,7 @@ class Deadbeat:
         self._at = {key: apex.x.index(APEX_INPUTS[key]["arg"]) for key in APEX_INPUTS}
         self._record = call.record(apex)
         # the energy budget's stiffness: k_d (none for a constant-stiffness map)
-        kd = "k_d" if "k_d" in self.wrt else None
+        kd = "k_d" if "k_d" in self.wrt and budget else None
         kd_bounds = self.bounds.get("k_d", tuple(f * params.k_c for f in DEFAULT_STIFFNESS_RANGE))
         names = [CONTROLS[c] for c in self.controls]
         fields = dict(
@@ -609,19 +613,22 @@ class Deadbeat:
         target_speed,
         *,
         ground=0.0,
+        retraction_rate=0.0,
         touchdown_angle=None,
         k_c=None,
         k_d=None,
         k=None,
     ) -> DeadbeatResult:
         """One step (module docstring): the controls from the apex (h, v) over ``ground`` to the
-        target (``target_height`` or ``target_speed`` may be None: not a target); the other
-        keywords are starting (or fixed) values of the controls."""
+        target (``target_height`` or ``target_speed`` may be None: not a target), the swing leg
+        retracting at ``retraction_rate`` [rad/s] after the apex (the angle solved for is then the
+        one at the apex); the other keywords are starting (or fixed) values of the controls."""
         h = _finite("apex_height", apex_height)
         if h < 0.0:
             non_negative("apex_height", h)
         v = _finite("apex_speed", apex_speed)
         gr = _finite("ground", ground)
+        rate = _finite("retraction_rate", retraction_rate)
         tgt = self._targeted(target_height, target_speed)
         H = _finite("target_height", target_height) if tgt[0] else math.nan
         V = _finite("target_speed", target_speed) if tgt[1] else math.nan
@@ -633,13 +640,22 @@ class Deadbeat:
         if not -_HALF_PI < th < _HALF_PI:
             leg_angle("touchdown_angle", th)
         p = self._record if k_c is None and k_d is None and k is None else self._record_with(k_c, k_d, k)
-        X = self._inputs({"apex_height": h, "apex_speed": v, "ground": gr, "touchdown_angle": th}, 1)
+        given = {"apex_height": h, "apex_speed": v, "ground": gr, "touchdown_angle": th}
+        X = self._inputs(given | {"retraction_rate": rate}, 1)
         T = np.array([[H if tgt[0] else 0.0, V if tgt[1] else 0.0]])
         out = self.solver.run(X, p[None, :], T, self._settings[tgt])[0]
         return DeadbeatResult(self, out, p, (h, v, gr), (H, V), th)
 
     def plan_batch(
-        self, apex_height, apex_speed, target_height, target_speed, *, ground=0.0, touchdown_angle=None
+        self,
+        apex_height,
+        apex_speed,
+        target_height,
+        target_speed,
+        *,
+        ground=0.0,
+        retraction_rate=0.0,
+        touchdown_angle=None,
     ) -> DeadbeatBatch:
         """Many steps in parallel: the inputs broadcast (``touchdown_angle``: starting angles, default
         :func:`~slipmaps.runtime.control.deadbeat.default_angle` of each apex speed); a plan status
@@ -650,6 +666,7 @@ class Deadbeat:
             "apex_speed": apex_speed,
             "touchdown_angle": 0.0 if touchdown_angle is None else touchdown_angle,
             "ground": ground,
+            "retraction_rate": retraction_rate,
             "target_height": target_height if tgt[0] else 0.0,
             "target_speed": target_speed if tgt[1] else 0.0,
         }
@@ -803,6 +820,7 @@ def deadbeat(
     target_speed,
     *,
     ground=0.0,
+    retraction_rate=0.0,
     controls=None,
     bounds=None,
     touchdown_angle=None,
@@ -813,7 +831,8 @@ def deadbeat(
 ) -> DeadbeatResult:
     """The controls of one step of map ``name`` from the apex (``apex_height`` [m], signed
     ``apex_speed`` [m/s]) over ``ground`` [m] to the target next apex (``target_height`` above the
-    touchdown ground, ``target_speed``; either may be None): module docstring. ``touchdown_angle``,
+    touchdown ground, ``target_speed``; either may be None), the swing leg retracting at
+    ``retraction_rate`` [rad/s] after the apex: module docstring. ``touchdown_angle``,
     ``k_c``, ``k_d``, ``k`` are starting (or, not being controls, fixed) values; ``map_options``
     the map's options and the solver's ``tol``, ``jacobian`` ("broyden" or "newton"), ``scan``,
     ``max_evaluations``."""
@@ -824,6 +843,7 @@ def deadbeat(
         target_height,
         target_speed,
         ground=ground,
+        retraction_rate=retraction_rate,
         touchdown_angle=touchdown_angle,
         k_c=k_c,
         k_d=k_d,
@@ -840,6 +860,7 @@ def deadbeat_batch(
     target_speed,
     *,
     ground=0.0,
+    retraction_rate=0.0,
     controls=None,
     bounds=None,
     touchdown_angle=None,
@@ -849,5 +870,11 @@ def deadbeat_batch(
     broadcast), in parallel; a plan status per row."""
     ctl = _controller(name, params, controls, bounds, map_options)
     return ctl.plan_batch(
-        apex_height, apex_speed, target_height, target_speed, ground=ground, touchdown_angle=touchdown_angle
+        apex_height,
+        apex_speed,
+        target_height,
+        target_speed,
+        ground=ground,
+        retraction_rate=retraction_rate,
+        touchdown_angle=touchdown_angle,
     )

@@ -1,6 +1,7 @@
 """Figures of runs: the body path over the terrain with the leg at every touchdown and liftoff and
-the targets; the apex per step against its targets; an animation (GIF: matplotlib's Agg canvas, frames
-saved by Pillow).
+the targets; the apex per step against its targets; the swing leg's angle over each descent; an
+animation (GIF: matplotlib's Agg canvas, frames saved by Pillow); a swing policy's controls against
+the time since the apex (:func:`policy_figure`).
 
 Every path written is checked before any work by the callers (:mod:`slipmaps.runtime.cli.run`);
 here the figure is drawn and saved.
@@ -12,7 +13,7 @@ import math
 
 import numpy as np
 
-__all__ = ["animate", "run_figure"]
+__all__ = ["animate", "policy_figure", "run_figure"]
 
 _BODY = "#1f4e79"
 _LEG_TD = "#c0392b"
@@ -55,6 +56,93 @@ def _draw_path(ax, path, label_targets: bool = True):
     ax.set_ylabel("y [m]")
 
 
+def _draw_swing(ax, run):
+    """The swing leg's angle against the time since the apex, a line per descent, the touchdown
+    marked (its colour darkening with the step)."""
+    b, i, n = run.batch, run.index, len(run)
+    t_d = b.values["t_descent"][i, :n]
+    colours = matplotlib_colours(n)
+    for k in range(n):
+        if b.swing is None or not np.isfinite(t_d[k]):
+            continue
+        tt = np.linspace(0.0, t_d[k], b.swing.shape[2])
+        ax.plot(tt, b.swing[i, k], "-", color=colours[k], lw=1.0)
+        ax.plot([t_d[k]], [b.values["touchdown_angle"][i, k]], "o", color=colours[k], ms=3)
+    policy = run.scenario.policy + (
+        f" {run.scenario.retraction_rate:+g} rad/s" if run.scenario.policy == "retraction" else ""
+    )
+    ax.set_title(f"swing leg ({policy}); dots: touchdown", fontsize=9)
+    ax.set_xlabel("time since the apex [s]")
+    ax.set_ylabel("leg angle [rad]")
+    ax.grid(alpha=0.3)
+
+
+def matplotlib_colours(n: int):
+    """``n`` colours from light to dark blue."""
+    import matplotlib
+
+    cmap = matplotlib.colormaps["Blues"]
+    return [cmap(0.35 + 0.6 * k / max(n - 1, 1)) for k in range(n)]
+
+
+def policy_figure(policy, out_path):
+    """A swing policy's controls against the time since the apex: the interpolated table and its
+    knots by status (REACHED filled, UNREACHABLE open), one panel per control that varies, and the
+    grounds against their touchdown times; written to ``out_path``, returned."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from ..api.paths import writing
+
+    used = policy.used
+    t = policy.t_touchdown
+    names = ["touchdown_angle"] + [c for c in ("k_c", "k_d") if np.ptp(getattr(policy, c)[used]) > 0]
+    fig, axes = plt.subplots(
+        1, len(names) + 1, figsize=(4.2 * (len(names) + 1), 3.6), constrained_layout=True
+    )
+    if used.any():
+        fine = np.linspace(0.0, 1.05 * np.nanmax(t[used]), 400)
+        curves = policy.controls_at(fine)
+    units = {"touchdown_angle": "rad", "k_c": "N/m", "k_d": "N/m"}
+    for ax, name in zip(axes, names, strict=False):
+        if used.any():
+            ax.plot(fine, curves[name], "-", color=_BODY, lw=1.0, label="policy")
+        y = getattr(policy, name)
+        reached = used & policy.reached
+        ax.plot(t[reached], y[reached], "o", color=_BODY, ms=3, label="REACHED")
+        ax.plot(
+            t[used & ~policy.reached],
+            y[used & ~policy.reached],
+            "o",
+            mfc="none",
+            color=_LEG_TD,
+            ms=4,
+            label="UNREACHABLE",
+        )
+        ax.set_xlabel("time since the apex [s]")
+        ax.set_ylabel(f"{name} [{units[name]}]")
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8, frameon=False)
+    ax = axes[-1]
+    ax.plot(t[used], policy.grounds[used], ".", color=_GROUND)
+    ax.set_xlabel("touchdown time [s]")
+    ax.set_ylabel("ground [m]")
+    ax.grid(alpha=0.3)
+    fig.suptitle(
+        f"swing policy on {policy.model}: apex {policy.apex_height:g} m, {policy.apex_speed:g} m/s -> "
+        f"target {policy.target_height} m, {policy.target_speed} m/s",
+        fontsize=10,
+    )
+    try:
+        with writing(out_path):
+            fig.savefig(out_path, dpi=110)
+    finally:
+        plt.close(fig)
+    return out_path
+
+
 def run_figure(run, out_path, *, title: str | None = None):
     """The run's figure (module docstring) written to ``out_path``; returns the path."""
     import matplotlib
@@ -64,8 +152,8 @@ def run_figure(run, out_path, *, title: str | None = None):
 
     path = run.path()
     sc = run.scenario
-    fig = plt.figure(figsize=(12, 7.5), constrained_layout=True)
-    grid = fig.add_gridspec(2, 2, height_ratios=(1.35, 1.0))
+    fig = plt.figure(figsize=(15, 7.5), constrained_layout=True)
+    grid = fig.add_gridspec(2, 3, height_ratios=(1.35, 1.0))
     ax = fig.add_subplot(grid[0, :])
     _draw_path(ax, path)
     span = float(np.ptp(path.x)) if path.x.size else 1.0
@@ -88,6 +176,7 @@ def run_figure(run, out_path, *, title: str | None = None):
         a.grid(alpha=0.3)
         if col == 0:
             a.legend(fontsize=8, frameon=False)
+    _draw_swing(fig.add_subplot(grid[1, 2]), run)
     from ..api.paths import writing
 
     try:
@@ -99,7 +188,7 @@ def run_figure(run, out_path, *, title: str | None = None):
 
 
 def animate(run, out_path, *, fps: int = 20, speed: float = 0.5, progress=None):
-    """A GIF of the run: the body, the leg (from the foot in stance; at its touchdown angle in
+    """A GIF of the run: the body, the leg (from the foot in stance; at the swing leg's angle in
     flight), the terrain and the targets; ``speed`` the playback speed (0.5: half real time). The
     view follows the body; its position is printed in the frame's label (a moving axis's tick
     labels cost most of a frame's drawing). Each frame is drawn once on the Agg canvas and handed to
@@ -117,8 +206,6 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5, progress=None):
     path = run.path(samples=30)
     sc = run.scenario
     l0 = sc.params.l0
-    b = run.batch
-    angles = b.values["touchdown_angle"][run.index][: len(run)]
     frames = max(2, int(math.ceil(float(path.t[-1]) / speed * fps))) if path.t.size else 2
     times = np.linspace(0.0, float(path.t[-1]) if path.t.size else 0.0, frames)
     fig, ax = plt.subplots(figsize=(8, 3.6), dpi=72, constrained_layout=True)
@@ -149,7 +236,11 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5, progress=None):
         if step < path.foot_x.size and path.t_touchdown[step] <= t <= path.t_liftoff[step]:
             leg.set_data([path.foot_x[step], x], [path.foot_y[step], y])
         else:
-            th = angles[min(step, angles.size - 1)] if angles.size else 0.0
+            th = (
+                float(np.interp(t, path.t, np.where(np.isfinite(path.leg), path.leg, 0.0)))
+                if path.t.size
+                else 0.0
+            )
             leg.set_data([x, x + l0 * math.sin(th)], [y, y - l0 * math.cos(th)])
         label.set_text(f"t = {t:.2f} s, x = {x:.2f} m, step {min(step, max(len(run) - 1, 0))}")
         ax.set_xlim(x - half, x + half)

@@ -7,7 +7,9 @@ descent (g_f) for t_descent to the touchdown, the foot at x_n + foot_x on the to
 the stance sampled from the plant's trajectory (``slipmaps.trajectory`` with the stiffness the
 plant ran with) where the plant has one, else piecewise linear in the polar state through the
 touchdown, bottom and liftoff states (``iterative``: event states only); the ballistic ascent for
-t_ascent. The terrain is flat between feet, each edge halfway between two consecutive feet.
+t_ascent. The terrain is flat between feet, each edge halfway between two consecutive feet. The swing
+leg's angle along the flights (``leg``): over a descent the run's record of it (``RunBatch.swing``,
+interpolated), over an ascent the angle the next descent starts with (held).
 """
 
 from __future__ import annotations
@@ -30,7 +32,8 @@ class Path:
     ``t_liftoff``) and body positions (``touchdown_body``, ``liftoff_body``: (n, 2)); the apexes
     (``apex``: (n + 1, 2)) and the planned targets (``target``: (n, 2), at the next apex's x); the
     terrain as a polyline (``terrain``: (k, 2)); ``sampled``: False when the stance is interpolated
-    between its event states (a plant without a trajectory)."""
+    between its event states (a plant without a trajectory); ``leg``: the swing leg's angle along
+    the path (NaN in a stance)."""
 
     t: np.ndarray
     x: np.ndarray
@@ -46,6 +49,7 @@ class Path:
     target: np.ndarray
     terrain: np.ndarray
     sampled: bool
+    leg: np.ndarray
 
 
 def _polar_to_body(q_r, q_th):
@@ -88,7 +92,17 @@ def path(run, samples: int = 40) -> Path:
     sampled = get(sc.plant).has_trajectory
     n_steps = len(run)
     ok = b.codes["plant_status"][i] == 0
-    T, X, Y, ST = [], [], [], []
+    T, X, Y, ST, LEG = [], [], [], [], []
+    swing = b.swing[i] if b.swing is not None else None
+
+    def swing_at(k, tt, t_d):
+        """The leg's angle at times ``tt`` of descent ``k`` (of duration ``t_d``)."""
+        if swing is None or k >= n_steps or not np.isfinite(swing[k]).all():
+            th = b.values["touchdown_angle"][i, min(k, n_steps - 1)]
+            return np.full(tt.shape, th)
+        grid = np.linspace(0.0, t_d, swing.shape[1]) if t_d > 0 else np.zeros(swing.shape[1])
+        return np.interp(tt, grid, swing[k]) if t_d > 0 else np.full(tt.shape, swing[k][0])
+
     feet_x, feet_y, t_td, t_lo, td_body, lo_body, apexes, targets = [], [], [], [], [], [], [], []
     x_apex, t_now = 0.0, 0.0
     ground_prev = 0.0
@@ -106,6 +120,7 @@ def path(run, samples: int = 40) -> Path:
         X.append(x_apex + v * tt)
         Y.append(y_apex - 0.5 * g * tt * tt)
         ST.append(np.zeros(samples, dtype=bool))
+        LEG.append(swing_at(n, tt, t_d))
         t_now += t_d
         foot = x_apex + b.values["foot_x"][i, n]
         feet_x.append(foot)
@@ -117,6 +132,7 @@ def path(run, samples: int = 40) -> Path:
         X.append(foot + bx)
         Y.append(G + by)
         ST.append(np.ones(samples, dtype=bool))
+        LEG.append(np.full(samples, np.nan))
         td_body.append((foot + bx[0], G + by[0]))
         lo = b.states["liftoff"][i, n]
         lbx, lby = _polar_to_body(lo[0], lo[2])
@@ -131,6 +147,8 @@ def path(run, samples: int = 40) -> Path:
         X.append(foot + lbx + xd * tt)
         Y.append(G + lby + yd * tt - 0.5 * g * tt * tt)
         ST.append(np.zeros(samples, dtype=bool))
+        nxt = n + 1 if n + 1 < n_steps and ok[n + 1] else n
+        LEG.append(np.full(samples, swing_at(nxt, np.zeros(1), 0.0)[0]))
         t_now += t_a
         x_apex = x_apex + b.values["step_length"][i, n]
         targets.append((x_apex, G + b.values["target_height"][i, n]))
@@ -154,6 +172,7 @@ def path(run, samples: int = 40) -> Path:
         target=np.array(targets).reshape(-1, 2),
         terrain=terrain,
         sampled=sampled,
+        leg=np.concatenate(LEG) if LEG else np.zeros(0),
     )
 
 

@@ -105,7 +105,7 @@ class Plant:
         return {"touchdown", "bottom"} <= set(self._halves)
 
     # ------------------------------------------------------------------------------------------
-    def _descent(self, h, v, th, ground):
+    def _descent(self, h, v, th, ground, rate):
         p = self.params
         code, out = model.rows(
             "apex_to_touchdown",
@@ -115,6 +115,7 @@ class Plant:
             q_r_td=p.q_r_td,
             g_f=p.g_f,
             ground=ground,
+            retraction_rate=rate,
         )
         td = np.stack([out[f"touchdown_{q}"] for q in _POLAR], axis=1)
         return code, td, out["t_flight"], out["foot_x"]
@@ -132,14 +133,19 @@ class Plant:
         status[fresh] = code[fresh]
         return out["apex_b_y"], out["apex_b_xd"], out["t_flight"], foot_x + out["apex_b_x"]
 
-    def step(self, apex_height, apex_speed, touchdown_angle, ground, k_c, k_d) -> PlantSteps:
-        """One step of every row (module docstring)."""
-        h, v, th, gr, kc, kd = (
+    def step(
+        self, apex_height, apex_speed, touchdown_angle, ground, k_c, k_d, retraction_rate=0.0
+    ) -> PlantSteps:
+        """One step of every row (module docstring); the swing leg at ``touchdown_angle`` at the apex,
+        retracting at ``retraction_rate`` [rad/s] until it meets the ground."""
+        h, v, th, gr, kc, kd, rate = (
             np.ascontiguousarray(np.atleast_1d(np.asarray(x, dtype=float)))
-            for x in np.broadcast_arrays(apex_height, apex_speed, touchdown_angle, ground, k_c, k_d)
+            for x in np.broadcast_arrays(
+                apex_height, apex_speed, touchdown_angle, ground, k_c, k_d, retraction_rate
+            )
         )
         n = h.shape[0]
-        status, td, t_descent, foot_x = self._descent(h, v, th, gr)
+        status, td, t_descent, foot_x = self._descent(h, v, th, gr, rate)
         values = {a: td[:, j] for j, a in enumerate(self._stance.x)}
         values.update(self._stiffness(kc, kd, status))
         S, code = KERNELS.rows(self.call, "stance", values, {}, n, False)
@@ -190,14 +196,17 @@ class Plant:
         names = {o.name for o in info.options}
         return {k: v for k, v in self.options.items() if k in names}
 
-    def compress(self, apex_height, apex_speed, touchdown_angle, ground, k_c):
-        """The first stage of a two-stage step: the descent and the compression half (k_c):
-        ``(status, touchdown, t_descent, foot_x, t_bottom, bottom)`` per row."""
-        h, v, th, gr, kc = (
+    def compress(self, apex_height, apex_speed, touchdown_angle, ground, k_c, retraction_rate=0.0):
+        """The first stage of a two-stage step: the descent (the leg retracting at ``retraction_rate``)
+        and the compression half (k_c): ``(status, touchdown, t_descent, foot_x, t_bottom, bottom)``
+        per row."""
+        h, v, th, gr, kc, rate = (
             np.ascontiguousarray(np.atleast_1d(np.asarray(x, dtype=float)))
-            for x in np.broadcast_arrays(apex_height, apex_speed, touchdown_angle, ground, k_c)
+            for x in np.broadcast_arrays(
+                apex_height, apex_speed, touchdown_angle, ground, k_c, retraction_rate
+            )
         )
-        status, td, t_descent, foot_x = self._descent(h, v, th, gr)
+        status, td, t_descent, foot_x = self._descent(h, v, th, gr, rate)
         bottom, t_half = self._run_half("touchdown", td, "k_c", kc, status)
         return status, td, t_descent, foot_x, t_half, bottom
 

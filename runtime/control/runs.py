@@ -12,8 +12,12 @@ Each step of a run (:func:`run`, :func:`run_batch` for many runs in lockstep):
    while the measured speed exceeds :data:`V_REVERSE`; below it the step is planned from a hop in
    place (apex speed 0), so that a run stops, then turns; then, with known terrain, the planner
    (:mod:`.planner`) moves it where the coming steps need it;
-4. the deadbeat solve on the model (:class:`~.deadbeat.Deadbeat`, warm-started from the previous
-   step's angle); its controls are applied whatever its status (the closest reachable ones when
+4. the controller on the model, by the scenario's swing-leg policy (``policy``): ``apex``, the
+   deadbeat solve (:class:`~.deadbeat.Deadbeat`, warm-started from the previous step's angle), its
+   angle held through the flight; ``retraction``, the same solve with the leg retracting at
+   ``retraction_rate`` after the apex; ``time-based``, a swing policy (:mod:`.swing`) over the
+   scenario's ``grounds`` around the expected ground, its controls read where the leg meets the true
+   ground. A solve's controls are applied whatever its status (the closest reachable ones when
    UNREACHABLE; when the map failed, the previous step's angle and the nominal stiffness);
 5. the plant step (:class:`~.plant.Plant`: the exact simulator by default; with the scenario's mass
    and stiffness mismatch: the plant's mass is (1 + mismatch) times the model's, its springs (1 +
@@ -22,12 +26,15 @@ Each step of a run (:func:`run`, :func:`run_batch` for many runs in lockstep):
 6. the next apex; a plant step that fails (a fall, no touchdown, no liftoff...) ends the run there.
 
 Records (:class:`RunBatch`, arrays runs x steps; :class:`Run` one run with its steps as rows):
-the apex (true and measured), the ground, the nominal and the planned target, the controls, the
-plan status (``REACHED``, ``UNREACHABLE``, ``MAP_FAILED``; ``FIXED`` for a fixed-angle run, the
-self-stable baseline), the plant status, the next apex and its error against the planned target,
-the step length, the controller's solve time (us; the scalar run times :meth:`Deadbeat.plan` itself,
-a batch the parallel call per run), and the stance states and times that make the continuous path
-(:meth:`Run.path`, for the figures).
+the apex (true and measured), the ground, the nominal and the planned target, the controls (the
+leg's angle at the apex ``swing_angle`` and at the touchdown ``touchdown_angle``; ``swing``: the
+leg's angle at :data:`SWING_SAMPLES` evenly spaced times of each descent), the plan status
+(``REACHED``, ``UNREACHABLE``, ``MAP_FAILED``; ``OUT_OF_RANGE`` for a time-based step whose ground
+lies outside its policy's; ``FIXED`` for a fixed-angle run, the self-stable baseline), the plant
+status, the next apex and its error against the planned target, the step length, the controller's
+solve time (us; the scalar run times :meth:`Deadbeat.plan` itself, a batch the parallel call per
+run, a time-based step its policy per run), and the stance states and times that make the
+continuous path (:meth:`Run.path`, for the figures).
 
 A run's memory is estimated before any work (:func:`memory_estimate`, bytes); one beyond the
 machine's memory is refused with the estimate (ValueError). Ctrl-C during a run raises
@@ -55,6 +62,7 @@ from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_ang
 from .planner import plan_targets
 from .plant import Plant
 from .scenarios import Scenario, from_dict, load
+from .swing import policy_tables
 
 __all__ = [
     "Run",
@@ -75,7 +83,16 @@ __all__ = [
 V_REVERSE = 0.05
 #: Plan status codes in the records: the solver's, and the two a record adds.
 FIXED, NOT_RUN = -1, -2
-PLAN_NAMES = {0: "REACHED", 1: "UNREACHABLE", 2: "MAP_FAILED", FIXED: "FIXED", NOT_RUN: "-"}
+PLAN_NAMES = {
+    0: "REACHED",
+    1: "UNREACHABLE",
+    2: "MAP_FAILED",
+    3: "OUT_OF_RANGE",
+    FIXED: "FIXED",
+    NOT_RUN: "-",
+}
+#: The leg's angle recorded at this many evenly spaced times of each descent (``swing``).
+SWING_SAMPLES = 9
 
 _FIELDS = (
     "apex_height",
@@ -88,6 +105,7 @@ _FIELDS = (
     "target_height",
     "target_speed",
     "touchdown_angle",
+    "swing_angle",
     "k_c",
     "k_d",
     "k_d_planned",
@@ -142,7 +160,7 @@ _SCENARIO_BYTES_PER_STEP = 3 * 32
 def memory_estimate(runs: int, steps: int) -> int:
     """The bytes a run of ``runs`` x ``steps`` allocates for its records (float64 values, the three
     stance states of 4 floats, int64 codes, the noise and the grounds) and its scenario's profiles."""
-    per = 8 * len(_FIELDS) + 8 * 4 * len(_STATES) + 8 * len(_CODES) + 8 * 2 + 8
+    per = 8 * len(_FIELDS) + 8 * 4 * len(_STATES) + 8 * SWING_SAMPLES + 8 * len(_CODES) + 8 * 2 + 8
     return int(runs) * int(steps) * per + int(steps) * _SCENARIO_BYTES_PER_STEP
 
 
@@ -178,13 +196,15 @@ def check_memory(runs: int, steps: int, available: int | None = None) -> int:
 class RunBatch:
     """Many runs of one scenario (arrays runs x steps, NaN where a step did not run; module
     docstring). ``fell`` (runs,): a plant step failed; ``completed``: steps run; ``grounds``: the
-    terrain of each run."""
+    terrain of each run; ``swing`` (runs x steps x :data:`SWING_SAMPLES`): the leg's angle over each
+    descent."""
 
     scenario: Scenario
     grounds: np.ndarray
     values: dict[str, np.ndarray]
     states: dict[str, np.ndarray]
     codes: dict[str, np.ndarray]
+    swing: np.ndarray | None = None
 
     @property
     def runs(self) -> int:
@@ -378,6 +398,23 @@ class _Controller:
         self.stiff = 1.0 + sc.mismatch_stiffness
         if sc.two_stage and not self.plant.has_halves:
             self.plant._half("touchdown")  # the error naming the plants that have halves
+        # the swing leg: a retraction rate after the apex, or a time-based policy on the model
+        self.rate = sc.retraction_rate if sc.policy == "retraction" or self.fixed else 0.0
+        self.policy = None
+        if sc.policy == "time-based":
+            self.policy = Deadbeat(
+                sc.model,
+                p,
+                controls=sc.controls,
+                bounds=sc.bounds,
+                tol=sc.tol,
+                jacobian=sc.jacobian,
+                budget=False,
+                **sc.model_options,
+            )
+            low, high = sc.policy_grounds
+            self.grid = np.linspace(high, low, sc.knots)  # the highest ground first (swing.py)
+            self.model_plant = Plant(sc.model, p, **sc.model_options)
 
 
 def check(sc: Scenario) -> None:
@@ -395,6 +432,8 @@ def check(sc: Scenario) -> None:
 
 
 def _warm(ctl: _Controller, scalar: bool) -> None:
+    if ctl.policy is not None:
+        ctl.policy.warm(batch=True)
     if ctl.deadbeat is not None:
         ctl.deadbeat.warm(batch=not scalar)
     if ctl.bottom is not None:
@@ -422,6 +461,7 @@ def run_batch(
     values = {k: np.full((R, S), math.nan) for k in _FIELDS}
     states = {k: np.full((R, S, 4), math.nan) for k in _STATES}
     codes = {k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES}
+    swing = np.full((R, S, SWING_SAMPLES), math.nan)
     noise = _noise(sc, R, seeds)
     h = np.full(R, sc.start_height)
     v = np.full(R, sc.start_speed)
@@ -454,6 +494,7 @@ def run_batch(
                     values,
                     states,
                     codes,
+                    swing,
                     scalar,
                 )
                 ok = codes["plant_status"][idx, n] == int(Status.OK)
@@ -463,9 +504,9 @@ def run_batch(
                 ground_prev[idx] = G[idx, n]
                 bar.update(1)
     except KeyboardInterrupt:
-        raise RunInterrupted(RunBatch(sc, G, values, states, codes)) from None
+        raise RunInterrupted(RunBatch(sc, G, values, states, codes, swing)) from None
     del p
-    return RunBatch(sc, G, values, states, codes)
+    return RunBatch(sc, G, values, states, codes, swing)
 
 
 def _step(
@@ -485,6 +526,7 @@ def _step(
     values,
     states,
     codes,
+    swing,
     scalar,
 ):
     p = sc.params
@@ -536,7 +578,14 @@ def _step(
 
             every = np.arange(m)
             H_step, V_step = planned(every, authority[idx] if ctl.energy else np.full(m, math.nan))
-        res = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar)
+        if ctl.policy is not None:
+            th, kc, kd, plan, pred_h, pred_v, solve, tables = _time_based(
+                ctl, hm, v_plan, H_step, V_step, gr_model, h[idx], gr_true
+            )
+            resid = elo = ehi = np.full(m, math.nan)
+        else:
+            res = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar, ctl.rate)
+    if not ctl.fixed and ctl.policy is None:
         if sc.known >= 1 and ctl.energy:
             # the authority changes with the angle: where the plan fell short, plan once more with
             # the authority of this solve
@@ -544,7 +593,7 @@ def _step(
             if again.size:
                 H2, V2 = planned(again, res["authority"][again])
                 args = (hm[again], v_plan[again], H2, V2, gr_model[again], res["touchdown_angle"][again])
-                res2 = _plan(ctl.deadbeat, *args, scalar)
+                res2 = _plan(ctl.deadbeat, *args, scalar, ctl.rate)
                 H_step[again], V_step[again] = H2, V2
                 for k in res:
                     res[k][again] = res[k][again] + res2[k] if k == "solve_us" else res2[k]
@@ -557,11 +606,11 @@ def _step(
         elo, ehi = res["energy_low"], res["energy_high"]
         authority[idx] = np.where(np.isfinite(res["authority"]), res["authority"], authority[idx])
         solve = res["solve_us"]
-    if not scalar and not ctl.fixed:
+    if not scalar and not ctl.fixed and ctl.policy is None:
         solve = np.full(m, (time.perf_counter() - t0) * 1e6 / m)
     values["target_height"][idx, n] = H_step
     values["target_speed"][idx, n] = V_step
-    values["touchdown_angle"][idx, n] = th
+    values["swing_angle"][idx, n] = th if ctl.policy is None else _swing_at(tables, np.zeros(m))
     values["k_c"][idx, n] = kc
     values["k_d_planned"][idx, n] = kd
     values["predicted_height"][idx, n] = pred_h
@@ -573,7 +622,7 @@ def _step(
     codes["plan_status"][idx, n] = plan
     f = ctl.stiff
     if ctl.bottom is not None:
-        first = ctl.plant.compress(h[idx], v[idx], th, gr_true, kc * f)
+        first = ctl.plant.compress(h[idx], v[idx], th, gr_true, kc * f, ctl.rate)
         bottoms = first[5]
         ok = first[0] == 0
         t1 = time.perf_counter()
@@ -601,7 +650,7 @@ def _step(
         steps = ctl.plant.decompress(first, kc * f, kd_b * f)
         kd_applied = kd_b
     else:
-        steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f)
+        steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f, ctl.rate)
         kd_applied = kd
     values["k_d"][idx, n] = kd_applied
     codes["plant_status"][idx, n] = steps.status
@@ -618,13 +667,55 @@ def _step(
         values[name][idx, n] = getattr(steps, attr)
     for name in _STATES:
         states[name][idx, n] = getattr(steps, name)
-    angle_prev[idx] = th
+    # the leg's angle: at the touchdown (the plant's), and over the descent
+    td_angle = steps.touchdown[:, 2]
+    values["touchdown_angle"][idx, n] = np.where(np.isfinite(td_angle), td_angle, th)
+    frac = np.linspace(0.0, 1.0, SWING_SAMPLES)
+    times = steps.t_descent[:, None] * frac[None, :]
+    if ctl.policy is None:
+        swing[idx, n] = th[:, None] + ctl.rate * times
+    else:
+        for k in range(SWING_SAMPLES):
+            swing[idx, n, k] = _swing_at(tables, np.where(np.isfinite(times[:, k]), times[:, k], 0.0))
+        swing[idx[~np.isfinite(steps.t_descent)], n] = math.nan
+    angle_prev[idx] = values["swing_angle"][idx, n]
 
 
-def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar) -> dict[str, np.ndarray]:
-    """The deadbeat solves of the rows: the scalar solve (timed) or one parallel batch."""
+def _swing_at(tables, t) -> np.ndarray:
+    """The time-based policies' leg angles at times ``t`` (one per row)."""
+    return tables.controls_at(t)["touchdown_angle"]
+
+
+def _time_based(ctl: _Controller, hm, vm, H, V, gr_model, h_true, gr_true):
+    """A time-based step of every row: the policies at the measured apex over the grounds around
+    the expected one (:mod:`.swing`), read where the leg meets the true ground from the true apex;
+    the model's prediction at those controls and that ground from the measured apex."""
+    sc = ctl.sc
+    t0 = time.perf_counter()
+    targeted = ctl.policy._targeted(None if sc.aim == "speed" else H, None if sc.aim == "height" else V)
+    tables = policy_tables(
+        ctl.policy,
+        hm,
+        vm,
+        H if targeted[0] else None,
+        V if targeted[1] else None,
+        gr_model[:, None] + ctl.grid[None, :],
+    )
+    solve = np.full(hm.size, (time.perf_counter() - t0) * 1e6 / hm.size)
+    td = tables.touchdown(h_true, gr_true)
+    th = np.where(np.isfinite(td["touchdown_angle"]), td["touchdown_angle"], default_angle(sc.params, vm))
+    kc = np.where(np.isfinite(td["k_c"]), td["k_c"], sc.params.k_c)
+    kd = np.where(np.isfinite(td["k_d"]), td["k_d"], sc.params.k_d)
+    plan = np.where(tables.counts > 0, td["status"], compiled.MAP_FAILED)
+    model = ctl.model_plant.step(hm, vm, th, gr_true, kc, kd)
+    return th, kc, kd, plan, model.apex_height, model.apex_speed, solve, tables
+
+
+def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar, rate=0.0) -> dict[str, np.ndarray]:
+    """The deadbeat solves of the rows: the scalar solve (timed) or one parallel batch; the leg
+    retracting at ``rate`` after the apex."""
     if not scalar:
-        b = ctl.plan_batch(hm, vm, H, V, ground=gr, touchdown_angle=start)
+        b = ctl.plan_batch(hm, vm, H, V, ground=gr, touchdown_angle=start, retraction_rate=rate)
         cols = {
             k: np.asarray(b[k])
             for k in ("status", "touchdown_angle", "k_c", "k_d", "apex_height", "apex_speed")
@@ -643,6 +734,7 @@ def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar) -> dict[str, np.ndarra
             float(H[i]),
             float(V[i]),
             ground=float(gr[i]),
+            retraction_rate=rate,
             touchdown_angle=float(start[i]),
         )
         dt = (time.perf_counter() - t) * 1e6

@@ -145,6 +145,37 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "jacobian",
     ),
     ("control", "tol"): ("number > 0", "1e-9", "scaled", "the deadbeat solve's tolerance", "tol"),
+    ("control", "policy"): (
+        "apex, retraction, time-based",
+        '"apex"',
+        "",
+        "the swing leg: the angle set at the apex and held; set at the apex and retracting at "
+        "`retraction_rate`; or a time-based policy over `grounds` (the controls as functions of the "
+        "time since the apex)",
+        "policy",
+    ),
+    ("control", "retraction_rate"): (
+        "number",
+        "0.0",
+        "rad/s",
+        "policy retraction (or with fixed_angle): the leg angle after the apex is the angle set plus "
+        "this rate times the time (counterclockwise positive)",
+        "retraction_rate",
+    ),
+    ("control", "grounds"): (
+        "pair [low, high]",
+        "[-0.3 l0, 0.3 l0]",
+        "m",
+        "policy time-based: the grounds the policy reaches the target on, around the expected one",
+        "grounds",
+    ),
+    ("control", "knots"): (
+        "integer >= 2",
+        "64",
+        "",
+        "policy time-based: the grounds of the policy's table",
+        "knots",
+    ),
     ("mismatch", "mass"): (
         "number > -1",
         "0.0",

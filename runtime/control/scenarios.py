@@ -22,6 +22,7 @@ each touchdown (``ground``: absolute heights, the ground under the start apex at
     [control]                    # controls, bounds, two_stage, decompression, aim, min_height, fixed_angle
     controls = ["touchdown_angle", "k_d"]   # default; the angle alone for a constant-stiffness model
     bounds = { k_d = [10000.0, 40000.0] }
+    policy = "apex"              # the swing leg: apex, retraction (retraction_rate), time-based
     [params]                     # SlipParams fields (the controller's); default the human runner
     [mismatch]                   # the plant's mass and stiffness off by a fraction: mass = 0.05
     [noise]                      # apex measurement noise (standard deviations) and its seed
@@ -32,7 +33,17 @@ each touchdown (``ground``: absolute heights, the ground under the start apex at
 
 ``kind = "random"`` draws each step's ground change uniformly in +-``amplitude`` [m] (seeded by the
 terrain's ``seed``); ``stairs`` rises by ``rise`` per stair (``before``, ``up``, ``flat``, ``down``
-steps). :func:`load` reads a file, :func:`from_dict` a table of the same keys; unknown keys are refused
+steps).
+
+The swing leg (``[control] policy``): ``"apex"`` (the deadbeat at the apex sets the touchdown angle,
+held until the foot meets the ground), ``"retraction"`` (the same solve with the leg retracting at
+``retraction_rate`` [rad/s] from the apex on: the ground met sets the angle it touches down with;
+Seyfarth, Geyer and Herr 2003), ``"time-based"`` (at the apex, a swing policy over the grounds
+``grounds`` = [low, high] [m] around the ground the controller expects, ``knots`` of them: the
+controls as functions of the time since the apex, read at the touchdown: :mod:`.swing`; Wu and Geyer
+2013). ``two_stage`` composes with each.
+
+:func:`load` reads a file, :func:`from_dict` a table of the same keys; unknown keys are refused
 naming the accepted ones. Every key with its type, default, unit and meaning: the site's scenario
 reference (docs/scenarios.md, from :mod:`.scenario_keys`).
 """
@@ -83,12 +94,18 @@ KEYS = {
         "fixed_angle",
         "jacobian",
         "tol",
+        "policy",
+        "retraction_rate",
+        "grounds",
+        "knots",
     ),
     "mismatch": ("mass", "stiffness"),
     "noise": ("height", "speed", "seed"),
     "params": (*FIELDS, "k"),
 }
 TERRAINS = ("flat", "steps", "stairs", "random")
+#: The swing-leg policies (module docstring).
+POLICIES = ("apex", "retraction", "time-based")
 
 
 @dataclass(frozen=True)
@@ -123,6 +140,10 @@ class Scenario:
     fixed_angle: float | None = None  # no controller: this angle and the nominal stiffness every step
     jacobian: str = "broyden"
     tol: float = 1e-9
+    policy: str = "apex"  # the swing leg: apex, retraction or time-based (module docstring)
+    retraction_rate: float = 0.0  # rad/s after the apex (policy retraction, or with fixed_angle)
+    grounds: tuple[float, float] | None = None  # time-based: the grounds [m] of the policy (default +-0.3 l0)
+    knots: int = 64  # time-based: the grounds of the policy's table
     mismatch_mass: float = 0.0  # the plant's mass is (1 + this) times the controller's
     mismatch_stiffness: float = 0.0  # the plant's springs are (1 + this) times what is commanded
     noise_height: float = 0.0  # standard deviation of the apex height measurement [m]
@@ -146,6 +167,13 @@ class Scenario:
                 object.__setattr__(self, name, tuple(float(x) for x in value))
 
     @property
+    def policy_grounds(self) -> tuple[float, float]:
+        """The time-based policy's ground range [m], relative to the ground the controller expects."""
+        if self.grounds is None:
+            return (-0.3 * self.params.l0, 0.3 * self.params.l0)
+        return self.grounds
+
+    @property
     def floor(self) -> float:
         return self.params.l0 if self.min_height is None else self.min_height
 
@@ -162,6 +190,7 @@ class Scenario:
         out["target_speed"] = list(self.target_speed)
         out["ground"] = list(self.ground)
         out["controls"] = None if self.controls is None else list(self.controls)
+        out["grounds"] = None if self.grounds is None else list(self.grounds)
         return out
 
 
@@ -364,6 +393,25 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
     for key in ("model_options", "plant_options"):
         if not isinstance(data.get(key, {}), dict):
             top.fail(key, f"must be a table of the map's options, got {data[key]!r}")
+    policy = control.text("policy", "apex")
+    if policy not in POLICIES:
+        control.fail("policy", f"must be one of {', '.join(POLICIES)}, got {policy!r}")
+    rate = control.number("retraction_rate", 0.0)
+    if rate != 0.0 and policy != "retraction" and fixed is None:
+        control.fail(
+            "retraction_rate",
+            f"is the rate of policy 'retraction' (or of a fixed_angle run); policy is {policy!r}",
+        )
+    if policy == "time-based" and fixed is not None:
+        control.fail("policy", "a time-based policy is a controller: it cannot go with fixed_angle")
+    grounds = control.data.get("grounds")
+    if grounds is not None:
+        if not (isinstance(grounds, list) and len(grounds) == 2):
+            control.fail("grounds", f"must be a pair [low, high] [m], got {grounds!r}")
+        grounds = tuple(control.number("grounds", value=x) for x in grounds)
+        if not grounds[0] < grounds[1]:
+            control.fail("grounds", f"must have low < high, got {list(grounds)!r}")
+    knots = control.integer("knots", 64, minimum=2)
     return Scenario(
         name=name,
         description=top.text("description", ""),
@@ -388,6 +436,10 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
         fixed_angle=fixed,
         jacobian=jacobian,
         tol=control.number("tol", 1e-9, positive=True),
+        policy=policy,
+        retraction_rate=rate,
+        grounds=grounds,
+        knots=knots,
         mismatch_mass=_fraction(mismatch, "mass"),
         mismatch_stiffness=_fraction(mismatch, "stiffness"),
         noise_height=noise.number("height", 0.0, non_negative=True),

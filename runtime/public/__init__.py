@@ -15,6 +15,8 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     gaits[0].touchdown_angle, gaits[0].eigenvalue, gaits[0].stable
     plan = slipmaps.deadbeat("iterative", params, 1.0, 5.0, 1.0, 5.2)   # touchdown angle and k_d
     plan.touchdown_angle, plan.k_d, plan.status                          # REACHED
+    policy = slipmaps.swing_policy("iterative", params, 1.3, 5.0, 1.3, 5.0, grounds=(-0.3, 0.3),
+                                   controls=("touchdown_angle", "k_d"))  # blind: any ground in range
     trip = slipmaps.run("examples/stairs.toml")                          # steps on the exact plant
 
 Conventions (all of them: docs/conventions.md): SI units; leg angle from the vertical,
@@ -68,6 +70,8 @@ _EXPORTS = {
     "DeadbeatBatch": "slipmaps.runtime.control.deadbeat",
     "PlanStatus": "slipmaps.runtime.control.deadbeat",
     "BottomDeadbeat": "slipmaps.runtime.control.bottom",
+    "swing_policy": "slipmaps.runtime.control.swing",
+    "SwingPolicy": "slipmaps.runtime.control.swing",
     "run": "slipmaps.runtime.control.runs",
     "run_batch": "slipmaps.runtime.control.runs",
     "Run": "slipmaps.runtime.control.runs",
