@@ -53,6 +53,20 @@ def add_parser(sub) -> argparse.ArgumentParser:
         "--known", type=int, default=None, help="touchdown grounds known ahead (0: unknown, flat assumed)"
     )
     p.add_argument("--two-stage", action="store_true", help="choose k_d again at the bottom")
+    p.add_argument(
+        "--policy",
+        default=None,
+        choices=("apex", "retraction", "time-based"),
+        help="the swing leg (overrides the file): the angle set at the apex and held; retracting at "
+        "--retraction-rate; or time-based (the controls as functions of the time since the apex)",
+    )
+    p.add_argument(
+        "--retraction-rate",
+        type=float,
+        default=None,
+        metavar="RAD_PER_S",
+        help="the swing leg's rate after the apex (policy retraction; negative: retracting)",
+    )
     p.add_argument("--option", action="append", metavar="KEY=VALUE", help="an option of the model map")
     p.add_argument("--plant-option", action="append", metavar="KEY=VALUE", help="an option of the plant")
     p.add_argument(
@@ -72,6 +86,12 @@ def add_parser(sub) -> argparse.ArgumentParser:
         help="the evaluation's directory (default: the checkout's docs/)",
     )
     e.add_argument("--quick", action="store_true", help="the small evaluation the tests re-run")
+    e.add_argument(
+        "--blind",
+        action="store_true",
+        help="re-measure only the blind-running part (swing-leg policies on unknown ground) into the "
+        "committed control.json and re-render control.md",
+    )
     e.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     return p
 
@@ -97,7 +117,9 @@ def _evaluate(args: argparse.Namespace) -> int:
             )
     from ..control.report import write
 
-    for path in write(out, root / "examples", quick=args.quick, progress=False if args.no_progress else None):
+    parts = ("blind",) if args.blind else None
+    progress = False if args.no_progress else None
+    for path in write(out, root / "examples", quick=args.quick, progress=progress, parts=parts):
         print(f"wrote {path}")
     return 0
 
@@ -126,6 +148,11 @@ def _overrides(args: argparse.Namespace, sc) -> dict:
         out["known"] = args.known
     if args.two_stage:
         out["two_stage"] = True
+    if args.policy is not None:
+        out["policy"] = args.policy
+    if args.retraction_rate is not None:
+        out["retraction_rate"] = args.retraction_rate
+        out.setdefault("policy", "retraction" if sc.fixed_angle is None else sc.policy)
     if args.option:
         out["model_options"] = map_options(out.get("model", sc.model), args.option)
     if args.plant_option:

@@ -21,7 +21,19 @@ Parts (all on the human runner, :data:`~slipmaps.HUMAN_RUNNER`; SI units):
   tracking of every scenario, and the rough ground at d = 0.3 known;
 * **cost**: the controller's time per step (the deadbeat solve; scalar :meth:`Deadbeat.plan` and
   per row of :meth:`Deadbeat.plan_batch`) on the rough-ground steps of each model, with its
-  Jacobian and map evaluations; measured, so machine-dependent (not re-measured by the tests).
+  Jacobian and map evaluations; measured, so machine-dependent (not re-measured by the tests);
+* **blind running** (:func:`blind`): ground the controller cannot see (known = 0), the model
+  ``iterative``, :data:`RUNS` runs of :data:`STEPS` steps at 5 m/s for each d of :data:`BLIND_DS`,
+  the swing-leg policies side by side (:func:`blind_variants`): a fixed angle (no controller); the
+  deadbeat at the apex with the leg retracting at the best rate of :data:`RATES` (searched on
+  :data:`RATE_RUNS` runs per d: the most runs kept over the grid); the deadbeat at the apex (the
+  angle held); the time-based policy (:mod:`.swing`) of the angle alone (its one target the apex
+  height) and of the angle and k_d; the two-stage form. Per variant and d: the share of runs that
+  do not fall, the largest d without a fall, the next apex's errors against the target on the steps
+  the policy reaches (plan status REACHED), the controller's time per step; at d = :data:`BLIND_D`
+  the same with apex-measurement noise (:data:`BLIND_NOISE`) and with the plant's mass off by
+  :data:`BLIND_MASS`; the time of one policy of :data:`~.swing.DEFAULT_KNOTS` grounds
+  (``slipmaps.swing_policy``, ``geyer`` and ``iterative``).
 
 Constant-stiffness models (``geyer``, the gravity corrections) control the touchdown angle alone (the
 energy is not theirs to change: their plant runs at k_c = k_d = k), the others the angle and k_d.
@@ -40,7 +52,7 @@ from ..analysis.gait import fixed_points
 from ..api.index import get, maps
 from ..api.params import HUMAN_RUNNER
 from ..api.progress import Bar
-from .runs import PLAN_NAMES, run_batch, scenario_of
+from .runs import NOT_RUN, PLAN_NAMES, run_batch, scenario_of
 
 __all__ = [
     "DS",
@@ -51,6 +63,11 @@ __all__ = [
     "SCENARIOS",
     "SPEED_FLOOR",
     "STEPS",
+    "BLIND_DS",
+    "RATES",
+    "blind",
+    "blind_scenario",
+    "blind_variants",
     "evaluate",
     "rough_grounds",
 ]
@@ -75,6 +92,18 @@ _REDUCTIONS = (("mean", np.mean), ("max", np.max))
 #: Problems timed per model, and repetitions (the best of each).
 COST_PROBLEMS, COST_REPEATS = 400, 3
 
+#: Blind running: the ground changes d (fractions of l0), the retraction rates searched [rad/s]
+#: (negative: retracting a forward runner's leg) and the runs per rate and d of the search, the d of
+#: the noise and mismatch runs, the noise (height [m], speed [m/s]: 1 cm and 1 % of 5 m/s), the
+#: plant's mass off by this fraction; the policy timing's repetitions.
+BLIND_DS = (0.1, 0.2, 0.3, 0.4, 0.5)
+RATES = (-0.5, -1.0, -1.5, -2.0, -2.5, -3.0)
+RATE_RUNS = 200
+BLIND_D = 0.3
+BLIND_NOISE = (0.01, 0.05)
+BLIND_MASS = 0.05
+POLICY_REPEATS = 50
+
 #: The small version the tests re-run: three models, two scenarios, few runs, no timing.
 QUICK = {
     "maps": ("geyer", "iterative", "exact"),
@@ -85,6 +114,9 @@ QUICK = {
     "search": False,
     "cost": False,
     "two_stage": True,
+    "blind_ds": (0.3, 0.5),
+    "rates": (-1.0, -2.0),
+    "rate_runs": 8,
 }
 
 
@@ -371,8 +403,156 @@ def target_check(steps: dict) -> dict:
     return out
 
 
-def evaluate(examples: str | Path, *, quick: bool = False, progress=None) -> dict:
-    """The evaluation record (module docstring): every map (``quick``: :data:`QUICK`)."""
+def blind_variants(rate: float) -> list[dict]:
+    """The swing-leg policies of the blind-running evaluation (module docstring), ``rate`` the
+    retraction rate of the retraction variant."""
+    return [
+        {"label": "fixed angle", "fixed": True},
+        {"label": "retraction", "policy": "retraction", "retraction_rate": rate},
+        {"label": "apex deadbeat", "policy": "apex"},
+        {
+            "label": "time-based, angle",
+            "policy": "time-based",
+            "controls": ("touchdown_angle",),
+            "aim": "height",
+        },
+        {
+            "label": "time-based, angle and k_d",
+            "policy": "time-based",
+            "controls": ("touchdown_angle", "k_d"),
+        },
+        {"label": "two-stage", "policy": "apex", "two_stage": True},
+    ]
+
+
+def blind_scenario(var: dict, d: float):
+    """The blind-running scenario of variant ``var`` at ground changes +-d l0 (the ground unknown, the
+    apex 1 + d high: :func:`_rough_scenario`); a time-based policy over the grounds +-d l0."""
+    if var.get("fixed"):
+        return _rough_scenario(None, 0, d, angle=baseline_angle(1.0 + d))
+    sc = _rough_scenario("iterative", 0, d, two_stage=var.get("two_stage", False))
+    changes = {k: var[k] for k in ("policy", "retraction_rate", "controls", "aim") if k in var}
+    if var.get("policy") == "time-based":
+        changes["grounds"] = (-d * sc.params.l0, d * sc.params.l0)
+    return sc.with_(**changes)
+
+
+def _blind_stats(batch) -> dict:
+    """Share of runs kept, and the errors against the target on the steps the policy reached (of the
+    components it aims at: NaN for one that is not a target)."""
+    dh, dv = batch.errors()
+    aim = batch.scenario.aim
+    rel = np.abs(dv) / np.maximum(np.abs(batch["target_speed"]), SPEED_FLOOR)
+    reached = (batch["plan_status"] == 0) & np.isfinite(dh)
+    ran = np.isfinite(dh)
+    solve = batch["solve_us"][batch["plan_status"] != NOT_RUN]
+    return {
+        "share": float(1.0 - batch.fell.mean()),
+        "steps": int(ran.sum()),
+        "reached": int(reached.sum()),
+        "height_error_max": float(np.max(np.abs(dh[reached])))
+        if reached.any() and aim != "speed"
+        else math.nan,
+        "speed_error_max": float(np.max(rel[reached])) if reached.any() and aim != "height" else math.nan,
+        "height_error_mean_all": float(np.mean(np.abs(dh[ran]))) if ran.any() else math.nan,
+        "speed_error_mean_all": float(np.mean(rel[ran])) if ran.any() else math.nan,
+        "solve_us": float(np.mean(solve)) if solve.size and np.isfinite(solve).any() else math.nan,
+    }
+
+
+def _blind_run(sc, d: float, runs: int, **changes) -> dict:
+    batch = run_batch(
+        sc.with_(**changes) if changes else sc,
+        rough_grounds(d, runs, sc.steps, sc.params.l0),
+        scalar=False,
+        progress=False,
+    )
+    return _blind_stats(batch)
+
+
+def best_rate(ds, rates, runs: int) -> dict:
+    """The retraction rate of :data:`RATES` that keeps the most runs over the grid (ties: the
+    smallest magnitude), and every rate's shares."""
+    var = blind_variants(0.0)[1]
+    shares = {}
+    for rate in rates:
+        shares[rate] = [
+            _blind_run(blind_scenario(var | {"retraction_rate": rate}, d), d, runs)["share"] for d in ds
+        ]
+    best = max(rates, key=lambda r: (sum(shares[r]), -abs(r)))
+    return {"runs": runs, "rates": list(rates), "shares": [shares[r] for r in rates], "best": best}
+
+
+def policy_cost() -> dict:
+    """The time of one swing policy of :data:`~.swing.DEFAULT_KNOTS` grounds (``swing_policy``, the
+    human runner's apex 1.3 m, 5 m/s, grounds +-0.3 l0): median and best of POLICY_REPEATS, ms."""
+    from .swing import swing_policy
+
+    out = {"load": _load(), "models": {}}
+    for name, controls in (
+        ("geyer", ("touchdown_angle",)),
+        ("iterative", ("touchdown_angle",)),
+        ("iterative", ("touchdown_angle", "k_d")),
+    ):
+
+        def one(name=name, controls=controls):
+            return swing_policy(
+                name, HUMAN_RUNNER, 1.3, 5.0, 1.3, 5.0, grounds=(-0.3, 0.3), controls=controls
+            )
+
+        one()
+        times = []
+        for _ in range(POLICY_REPEATS):
+            t = time.perf_counter()
+            one()
+            times.append(time.perf_counter() - t)
+        out["models"][f"{name}: {' and '.join(controls)}"] = {
+            "ms_median": 1e3 * float(np.median(times)),
+            "ms_best": 1e3 * float(np.min(times)),
+        }
+    return out
+
+
+def blind(ds, runs: int, rates, rate_runs: int, search: bool, cost: bool, bar=None) -> dict:
+    """The blind-running evaluation (module docstring)."""
+    rate = best_rate(ds, rates, rate_runs)
+    out = {"runs": runs, "steps": STEPS, "speed": 5.0, "d": list(ds), "rate_search": rate, "variants": {}}
+    if bar is not None:
+        bar.update(1)
+    at = min(ds, key=lambda d: abs(d - BLIND_D))
+    for var in blind_variants(rate["best"]):
+        per_d = {d: _blind_run(blind_scenario(var, d), d, runs) for d in ds}
+        shares = {d: per_d[d]["share"] for d in ds}
+
+        def make(d, var=var):
+            return blind_scenario(var, d)
+
+        sc = blind_scenario(var, at)
+        row = {
+            "label": var["label"]
+            + (f" {var['retraction_rate']:+g} rad/s" if "retraction_rate" in var else ""),
+            "per_d": [per_d[d] for d in ds],
+            "largest_d": _largest(make, shares, runs, search),
+            "noise": _blind_run(sc, at, runs, noise_height=BLIND_NOISE[0], noise_speed=BLIND_NOISE[1]),
+            "mass": _blind_run(sc, at, runs, mismatch_mass=BLIND_MASS),
+        }
+        if not cost:
+            for rec in (*row["per_d"], row["noise"], row["mass"]):
+                rec.pop("solve_us")
+        out["variants"][var["label"]] = row
+        if bar is not None:
+            bar.update(1)
+    out["noise_d"] = at
+    if cost:
+        out["policy_cost"] = policy_cost()
+    return out
+
+
+def evaluate(examples: str | Path, *, quick: bool = False, progress=None, parts=None) -> dict:
+    """The evaluation record (module docstring): every map (``quick``: :data:`QUICK`); ``parts``
+    (default all): the parts to measure, of "tracking" (with the rough ground, the mismatch and the
+    cost) and "blind"."""
+    parts = ("tracking", "blind") if parts is None else tuple(parts)
     examples = Path(examples)
     cfg = (
         dict(QUICK)
@@ -386,20 +566,29 @@ def evaluate(examples: str | Path, *, quick: bool = False, progress=None) -> dic
             "search": True,
             "cost": True,
             "two_stage": True,
+            "blind_ds": BLIND_DS,
+            "rates": RATES,
+            "rate_runs": RATE_RUNS,
         }
     )
     names = cfg["maps"]
     n_var = len(_variants(names))
-    total = (
-        len(cfg["scenarios"]) * n_var
-        + 1
-        + n_var
-        + len(cfg["mismatches"]) * n_var
-        + (len(names) if cfg["cost"] else 0)
-    )
+    total = 0
+    if "tracking" in parts:
+        total += len(cfg["scenarios"]) * n_var + 1 + n_var + len(cfg["mismatches"]) * n_var
+        total += len(names) if cfg["cost"] else 0
+    if "blind" in parts:
+        total += 1 + len(blind_variants(0.0))
+    record = {}
     with Bar(total, "control evaluation", progress, unit="parts") as bar:
+        if "blind" in parts:
+            runs = cfg["runs"]
+            args = (cfg["blind_ds"], runs, cfg["rates"], cfg["rate_runs"], cfg["search"], cfg["cost"])
+            record["blind"] = blind(*args, bar=bar)
+        if "tracking" not in parts:
+            return record
         track, steps = tracking(examples, names, cfg["scenarios"], bar=bar)
-        record = {
+        record |= {
             "params": HUMAN_RUNNER.as_dict(),
             "settings": {
                 "maps": list(names),

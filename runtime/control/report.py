@@ -3,8 +3,9 @@
 :func:`write` measures (the full evaluation, and its small version :data:`~.evaluation.QUICK` for
 the tests, in the same record under ``quick``), writes ``control.json`` (6 significant digits),
 ``control.md`` (exactly :func:`render` of the record), ``control_rough.png`` (the rough-ground
-survival) and a figure per scenario of the ``iterative`` model on the exact plant
-(``control_<scenario>.png``).
+survival), ``control_blind.png`` (blind running: :mod:`.report_blind`) and a figure per scenario of
+the ``iterative`` model on the exact plant (``control_<scenario>.png``). ``parts=("blind",)``
+re-measures the blind-running part alone into the committed record.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from ..api.index import get
 from ..api.paths import writing
 from .evaluation import D_MIN as EVAL_D_MIN
 from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
+from .report_blind import blind_figure, blind_section
 
 __all__ = ["render", "rounded", "summary", "write", "TARGETS"]
 
@@ -335,6 +337,8 @@ def render(rec: dict) -> str:
             *_cost(rec),
             "",
         ]
+    if "blind" in rec:
+        lines += blind_section(rec)
     lines += [
         "## Scenario runs (model `iterative`, plant `exact`)",
         "",
@@ -395,15 +399,44 @@ def rough_figure(rec: dict, path) -> Path:
     return Path(path)
 
 
-def write(out: str | Path, examples: str | Path, *, quick: bool = False, progress=None) -> list[Path]:
+def _write_blind(out: Path, examples, progress) -> list[Path]:
+    """Re-measure the blind-running part (full and small) into ``out``'s control.json, re-render."""
+    import time
+
+    path = out / "control.json"
+    if not path.is_file():
+        raise ValueError(f"{path} does not exist: run the whole evaluation first (without --blind)")
+    record = json.loads(path.read_text())
+    t0 = time.perf_counter()
+    small = evaluate(examples, quick=True, progress=progress, parts=("blind",))
+    full = evaluate(examples, progress=progress, parts=("blind",))
+    record["blind"] = full["blind"]
+    record["blind_seconds"] = time.perf_counter() - t0
+    record.setdefault("quick", {})["blind"] = small["blind"]
+    record = rounded(record)
+    with writing(path):
+        path.write_text(json.dumps(record, indent=1) + "\n")
+    written = [path, blind_figure(record, out / "control_blind.png")]
+    md = out / "control.md"
+    with writing(md):
+        md.write_text(render(record))
+    return [*written, md]
+
+
+def write(
+    out: str | Path, examples: str | Path, *, quick: bool = False, progress=None, parts=None
+) -> list[Path]:
     """Measure and write the evaluation into directory ``out`` (module docstring); ``quick``: the small
-    version only (no markdown, no figures: control_quick.json). Returns the paths written."""
+    version only (no markdown, no figures: control_quick.json); ``parts=("blind",)``: the blind-running
+    part alone, into the committed record. Returns the paths written."""
     import time
 
     from .figures import run_figure
     from .runs import run, scenario_of
 
     out = Path(out)
+    if parts is not None and tuple(parts) == ("blind",) and not quick:
+        return _write_blind(out, examples, progress)
     t0 = time.perf_counter()
     small = evaluate(examples, quick=True, progress=progress)
     if quick:
@@ -421,6 +454,7 @@ def write(out: str | Path, examples: str | Path, *, quick: bool = False, progres
         path.write_text(json.dumps(record, indent=1) + "\n")
     written.append(path)
     written.append(rough_figure(record, out / "control_rough.png"))
+    written.append(blind_figure(record, out / "control_blind.png"))
     for name in record["settings"]["scenarios"]:
         sc = scenario_of(Path(examples) / f"{name}.toml", {})
         written.append(Path(run_figure(run(sc, model="iterative"), out / f"control_{name}.png")))

@@ -151,6 +151,7 @@ class Scenario:
     seed: int = 0
 
     def __post_init__(self):
+        _check_policy(self)
         n = self.steps
         for name in ("target_height", "target_speed", "ground"):
             value = getattr(self, name)
@@ -192,6 +193,32 @@ class Scenario:
         out["controls"] = None if self.controls is None else list(self.controls)
         out["grounds"] = None if self.grounds is None else list(self.grounds)
         return out
+
+
+def _check_policy(sc: Scenario) -> None:
+    """ValueError (one line) for swing-leg settings that do not go together (module docstring)."""
+    where = f"scenario {sc.name!r}"
+    if sc.policy not in POLICIES:
+        raise ValueError(f"{where}: policy must be one of {', '.join(POLICIES)}, got {sc.policy!r}")
+    rate = sc.retraction_rate
+    if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not math.isfinite(rate):
+        raise ValueError(f"{where}: retraction_rate must be a finite number [rad/s], got {rate!r}")
+    if rate != 0.0 and sc.policy != "retraction" and sc.fixed_angle is None:
+        raise ValueError(
+            f"{where}: retraction_rate is the rate of policy 'retraction' (or of a fixed_angle run); "
+            f"policy is {sc.policy!r}"
+        )
+    if sc.policy == "time-based" and sc.fixed_angle is not None:
+        raise ValueError(f"{where}: a time-based policy is a controller: it cannot go with fixed_angle")
+    if isinstance(sc.knots, bool) or not isinstance(sc.knots, int) or sc.knots < 2:
+        raise ValueError(f"{where}: knots must be an integer >= 2, got {sc.knots!r}")
+    if sc.grounds is not None:
+        try:
+            low, high = (float(x) for x in sc.grounds)
+        except (TypeError, ValueError):
+            raise ValueError(f"{where}: grounds must be a pair (low, high) [m], got {sc.grounds!r}") from None
+        if not (math.isfinite(low) and math.isfinite(high) and low < high):
+            raise ValueError(f"{where}: grounds must be finite with low < high, got {sc.grounds!r}")
 
 
 class _Keys:
