@@ -177,7 +177,9 @@ def run(args: argparse.Namespace) -> int:
     sc = scenario_of(Path(args.scenario), {})
     overrides = _overrides(args, sc)
     if "steps" in overrides:
-        sc = _resized(sc, overrides.pop("steps"))
+        from ..control.scenarios import resized
+
+        sc = resized(sc, overrides.pop("steps"))
     sc = sc.with_(**overrides)
     from ..control.runs import check
     from ..control.runs import run as run_scenario
@@ -218,18 +220,3 @@ def run(args: argparse.Namespace) -> int:
         for path in written:
             print(f"wrote {path}")
     return 1 if result.fell else 0
-
-
-def _resized(sc, steps: int):
-    """The scenario with ``steps`` steps: its per-step profiles cut, or their last value held."""
-
-    def fit(values):
-        values = list(values)
-        return tuple(values[:steps] + [values[-1]] * max(steps - len(values), 0))
-
-    return sc.with_(
-        steps=steps,
-        target_height=fit(sc.target_height),
-        target_speed=fit(sc.target_speed),
-        ground=fit(sc.ground),
-    )

@@ -61,7 +61,7 @@ from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
 from .planner import plan_targets
 from .plant import Plant
-from .scenarios import Scenario, from_dict, load
+from .scenarios import Scenario, from_dict, load, resized
 from .swing import policy_tables
 
 __all__ = [
@@ -141,6 +141,9 @@ def scenario_of(scenario, overrides: dict) -> Scenario:
         sc = from_dict(scenario)
     else:
         raise TypeError(f"scenario must be a Scenario, a TOML path or a dict, got {type(scenario).__name__}")
+    overrides = dict(overrides)
+    if "steps" in overrides:  # the per-step profiles cut, or their last value held
+        sc = resized(sc, overrides.pop("steps"))
     return sc.with_(**overrides) if overrides else sc
 
 

@@ -61,7 +61,7 @@ from ..api.index import get, get_half
 from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipParams
 from .deadbeat import CONTROLS
 
-__all__ = ["Scenario", "from_dict", "load", "load_scenario", "read_toml", "KEYS"]
+__all__ = ["Scenario", "from_dict", "load", "load_scenario", "read_toml", "resized", "KEYS"]
 
 #: The accepted keys: top level and per table.
 KEYS = {
@@ -472,6 +472,21 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
         noise_height=noise.number("height", 0.0, non_negative=True),
         noise_speed=noise.number("speed", 0.0, non_negative=True),
         seed=noise.integer("seed", 0),
+    )
+
+
+def resized(sc: Scenario, steps: int) -> Scenario:
+    """The scenario with ``steps`` steps: its per-step profiles cut, or their last value held."""
+
+    def fit(values):
+        values = list(values)
+        return tuple(values[:steps] + [values[-1]] * max(steps - len(values), 0))
+
+    return sc.with_(
+        steps=steps,
+        target_height=fit(sc.target_height),
+        target_speed=fit(sc.target_speed),
+        ground=fit(sc.ground),
     )
 
 

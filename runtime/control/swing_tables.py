@@ -34,6 +34,8 @@ __all__ = [
     "touchdown_rows",
 ]
 
+#: A touchdown this close to an end knot (relative) is at the knot: in the table.
+_EDGE = 1e-12
 #: Where a touchdown falls in its table: between its first and last knots, before the first knot
 #: (a ground higher than the table's), after the last (lower), or the row has no knot.
 IN_RANGE, ABOVE_RANGE, BELOW_RANGE, NO_POLICY = 0, 1, 2, 3
@@ -141,12 +143,18 @@ def touchdown_rows(h, ground, g, q, T, A, MA, counts, t_out, angle_out, where, k
             angle_out[r] = math.nan
             where[r] = NO_POLICY
             continue
-        # before the first knot: the first angle held
+        # before the first knot: the first angle held (a root at the knot, to round-off, is in the table)
         t0 = _held(h[r], g, q, ground[r], a[0])
-        if not t0 > t[0]:
+        if not t0 > t[0] * (1.0 - _EDGE):
             t_out[r] = t0
             angle_out[r] = a[0]
             where[r] = ABOVE_RANGE
+            continue
+        if t0 <= t[0]:
+            t_out[r] = t0
+            angle_out[r] = a[0]
+            where[r] = IN_RANGE if n > 1 else ABOVE_RANGE
+            knot[r] = 0 if n > 1 else -1
             continue
         found = -1
         for k in range(n - 1):
@@ -154,9 +162,14 @@ def touchdown_rows(h, ground, g, q, T, A, MA, counts, t_out, angle_out, where, k
                 found = k
                 break
         if found < 0:
-            t_out[r] = _held(h[r], g, q, ground[r], a[n - 1])
+            t_end = _held(h[r], g, q, ground[r], a[n - 1])
+            t_out[r] = t_end
             angle_out[r] = a[n - 1]
-            where[r] = BELOW_RANGE
+            if n > 1 and t_end <= t[n - 1] * (1.0 + _EDGE):
+                where[r] = IN_RANGE  # at the last knot, to round-off
+                knot[r] = n - 2
+            else:
+                where[r] = BELOW_RANGE
             continue
         lo, hi = t[found], t[found + 1]
         for _ in range(200):
