@@ -68,7 +68,8 @@ def apex_to_touchdown():
     Returns a dict: ``drop`` (an expression), ``t0``; ``residual`` and ``slope`` (f and df/dt at the
     symbol ``t``); ``angle`` (q_th at ``t``); the polar touchdown ``state`` and ``foot_x`` (the
     toe's horizontal position relative to the apex) at the time ``t`` and the angle symbol
-    ``angle_symbol``.
+    ``angle_symbol``; ``t_far``, the time the body is ``q_r_td`` below the contact height (in
+    ``drop_symbol``), Newton's start when the foot is still above the ground at ``t0``.
     """
     ground, rate = INPUTS["ground"].symbol, INPUTS["retraction_rate"].symbol
     # the height, above the ground under the apex, at which the foot touches down
@@ -81,6 +82,11 @@ def apex_to_touchdown():
     drop_symbol = sp.Symbol("drop", positive=True)
     t0 = [r for r in sp.solve(sp.Eq(y_t.subs(apex), b_y_apex - drop_symbol), t) if r.is_positive][0]
     t0_symbol = sp.Symbol("t0", positive=True)
+    # Newton's start when the swinging foot is still above the ground at t0: the time the body is
+    # q_r_td below the contact height (every foot is on or below the ground then); the contact
+    # height in drop: b_y_apex - drop - q_r_td cos q_th_td
+    below = b_y_apex - drop_symbol - mechanics.body_position(q_r_td, q_th_td)[1] - q_r_td
+    (t_far,) = [r for r in sp.solve(sp.Eq(y_t.subs(apex), below), t) if not r.could_extract_minus_sign()]
     g = sp.sympify(y_t.subs(apex)).diff(t, 2) * -1  # the flight gravity, from the derived flight
     residual = g / 2 * (t0_symbol - t) * (t0_symbol + t) + q_r_td * (sp.cos(q_th_td) - sp.cos(angle))
     check = sp.simplify(
@@ -99,6 +105,7 @@ def apex_to_touchdown():
         "drop_symbol": drop_symbol,
         "t0": t0,
         "t0_symbol": t0_symbol,
+        "t_far": t_far,
         "residual": residual,
         "slope": residual.diff(t),
         "angle": angle,
@@ -172,7 +179,7 @@ def flight_kernels() -> dict[str, Kernel]:
             ),
             Stage(
                 (
-                    (t_far, sp.sqrt(2 * (drop + q_r_td * sp.cos(q_th_td) + q_r_td) / g_f)),
+                    (t_far, atd["t_far"]),
                     (t_start, sp.Piecewise((t0, atd["residual"].subs(t, t0) <= 0), (t_far, True))),
                 ),
                 comment="a start at or after the touchdown: t0 if the foot is on or below the ground then, "

@@ -489,26 +489,30 @@ def policy_cost() -> dict:
     from .swing import swing_policy
 
     out = {"load": _load(), "models": {}}
-    for name, controls in (
-        ("geyer", ("touchdown_angle",)),
-        ("iterative", ("touchdown_angle",)),
-        ("iterative", ("touchdown_angle", "k_d")),
+    for name, controls, n in (
+        ("geyer", ("touchdown_angle",), 64),
+        ("iterative", ("touchdown_angle",), 64),
+        ("iterative", ("touchdown_angle", "k_d"), 64),
+        ("iterative", ("touchdown_angle", "k_d"), 16),
     ):
+        H = 1.3 if len(controls) > 1 else None
 
-        def one(name=name, controls=controls):
+        def one(name=name, controls=controls, n=n, H=H):
             return swing_policy(
-                name, HUMAN_RUNNER, 1.3, 5.0, 1.3, 5.0, grounds=(-0.3, 0.3), controls=controls
+                name, HUMAN_RUNNER, 1.3, 5.0, H, 5.0, grounds=(-0.3, 0.3), controls=controls, n=n
             )
 
-        one()
+        error = one().representation_error()
         times = []
         for _ in range(POLICY_REPEATS):
             t = time.perf_counter()
             one()
             times.append(time.perf_counter() - t)
-        out["models"][f"{name}: {' and '.join(controls)}"] = {
+        out["models"][f"{name}: {' and '.join(controls)}, {n} grounds"] = {
             "ms_median": 1e3 * float(np.median(times)),
             "ms_best": 1e3 * float(np.min(times)),
+            "height_error": error["height"],
+            "speed_error": error["speed"],
         }
     return out
 
@@ -517,6 +521,12 @@ def blind(ds, runs: int, rates, rate_runs: int, search: bool, cost: bool, bar=No
     """The blind-running evaluation (module docstring)."""
     rate = best_rate(ds, rates, rate_runs)
     out = {"runs": runs, "steps": STEPS, "speed": 5.0, "d": list(ds), "rate_search": rate, "variants": {}}
+    # an energy-conserving step (the angle alone) that holds the apex height above the ground pays a
+    # climb with speed: v^2 = v0^2 - 2 g rise, so a terrain that climbs more than v0^2 / (2 g) above
+    # the start is beyond any such policy
+    climb = out["speed"] ** 2 / (2.0 * HUMAN_RUNNER.g_f)
+    out["climb_limit"] = climb
+    out["beyond_climb"] = [float((rough_grounds(d, runs).max(axis=1) > climb).mean()) for d in ds]
     if bar is not None:
         bar.update(1)
     at = min(ds, key=lambda d: abs(d - BLIND_D))
