@@ -86,7 +86,10 @@ def apex_to_touchdown():
     # q_r_td below the contact height (every foot is on or below the ground then); the contact
     # height in drop: b_y_apex - drop - q_r_td cos q_th_td
     below = b_y_apex - drop_symbol - mechanics.body_position(q_r_td, q_th_td)[1] - q_r_td
-    (t_far,) = [r for r in sp.solve(sp.Eq(y_t.subs(apex), below), t) if not r.could_extract_minus_sign()]
+    (root,) = [r for r in sp.solve(sp.Eq(y_t.subs(apex), below), t) if not r.could_extract_minus_sign()]
+    g_flight = -sp.sympify(y_t.subs(apex)).diff(t, 2)
+    # as sqrt(2 drop + 2 q_r_td cos q_th_td + 2 q_r_td) / sqrt(g_f): one square root of the sum
+    t_far = sp.sqrt(sp.expand(root**2 * g_flight)) / sp.sqrt(g_flight)
     g = sp.sympify(y_t.subs(apex)).diff(t, 2) * -1  # the flight gravity, from the derived flight
     residual = g / 2 * (t0_symbol - t) * (t0_symbol + t) + q_r_td * (sp.cos(q_th_td) - sp.cos(angle))
     check = sp.simplify(
