@@ -26,7 +26,8 @@ DEFAULTS = {r["arg"]: float(r["default"]) for r in APEX_INPUTS if "default" in r
 
 
 def _value(values: Mapping[str, float], name: str) -> float:
-    return float(values[name]) if name in values or name not in DEFAULTS else DEFAULTS[name]
+    """The argument ``name``: given, else the input's default (a missing required one: KeyError)."""
+    return float(values[name] if name in values or name not in DEFAULTS else DEFAULTS[name])
 
 
 @cache
