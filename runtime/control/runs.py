@@ -460,78 +460,63 @@ def run_batch(
     scalar = (R == 1) if scalar is None else scalar
     ctl = _Controller(sc)
     _warm(ctl, scalar)
-    p = sc.params
-    values = {k: np.full((R, S), math.nan) for k in _FIELDS}
-    states = {k: np.full((R, S, 4), math.nan) for k in _STATES}
-    codes = {k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES}
-    swing = np.full((R, S, SWING_SAMPLES), math.nan)
-    noise = _noise(sc, R, seeds)
-    h = np.full(R, sc.start_height)
-    v = np.full(R, sc.start_speed)
-    ground_prev = np.zeros(R)
+    batch = RunBatch(
+        sc,
+        G,
+        values={k: np.full((R, S), math.nan) for k in _FIELDS},
+        states={k: np.full((R, S, 4), math.nan) for k in _STATES},
+        codes={k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES},
+        swing=np.full((R, S, SWING_SAMPLES), math.nan),
+    )
+    live = _Live(
+        h=np.full(R, sc.start_height),
+        v=np.full(R, sc.start_speed),
+        ground_prev=np.zeros(R),
+        angle_prev=np.full(R, math.nan),
+        authority=np.full(R, math.nan),
+        noise=_noise(sc, R, seeds),
+    )
     alive = np.ones(R, dtype=bool)
-    angle_prev = np.full(R, math.nan)
-    authority = np.full(R, math.nan)
-    Ht_all = np.asarray(sc.target_height)
-    Vt_all = np.asarray(sc.target_speed)
+    values, codes = batch.values, batch.codes
     try:
         with Bar(S, f"{sc.name} ({R} runs)", progress) as bar:
             for n in range(S):
                 if not alive.any():
                     break
                 idx = np.flatnonzero(alive)
-                _step(
-                    ctl,
-                    sc,
-                    n,
-                    idx,
-                    h,
-                    v,
-                    ground_prev,
-                    G,
-                    noise,
-                    angle_prev,
-                    authority,
-                    Ht_all,
-                    Vt_all,
-                    values,
-                    states,
-                    codes,
-                    swing,
-                    scalar,
-                )
+                _step(ctl, n, idx, live, batch, scalar)
                 ok = codes["plant_status"][idx, n] == int(Status.OK)
                 alive[idx[~ok]] = False
-                h[idx] = values["next_height"][idx, n]
-                v[idx] = values["next_speed"][idx, n]
-                ground_prev[idx] = G[idx, n]
+                live.h[idx] = values["next_height"][idx, n]
+                live.v[idx] = values["next_speed"][idx, n]
+                live.ground_prev[idx] = G[idx, n]
                 bar.update(1)
     except KeyboardInterrupt:
-        raise RunInterrupted(RunBatch(sc, G, values, states, codes, swing)) from None
-    del p
-    return RunBatch(sc, G, values, states, codes, swing)
+        raise RunInterrupted(batch) from None
+    return batch
 
 
-def _step(
-    ctl,
-    sc,
-    n,
-    idx,
-    h,
-    v,
-    ground_prev,
-    G,
-    noise,
-    angle_prev,
-    authority,
-    Ht_all,
-    Vt_all,
-    values,
-    states,
-    codes,
-    swing,
-    scalar,
-):
+@dataclass
+class _Live:
+    """The runs between steps (arrays of runs): the true apex, the ground under it, the previous
+    step's angle and the energy authority (the solve's warm start), the measurement noise (runs x
+    steps x 2)."""
+
+    h: np.ndarray
+    v: np.ndarray
+    ground_prev: np.ndarray
+    angle_prev: np.ndarray
+    authority: np.ndarray
+    noise: np.ndarray
+
+
+def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatch, scalar: bool) -> None:
+    """Step ``n`` of the runs ``idx`` (module docstring), written into ``batch``'s records."""
+    sc = ctl.sc
+    h, v, ground_prev, noise = live.h, live.v, live.ground_prev, live.noise
+    angle_prev, authority = live.angle_prev, live.authority
+    G, values, states, codes, swing = batch.grounds, batch.values, batch.states, batch.codes, batch.swing
+    Ht_all, Vt_all = np.asarray(sc.target_height), np.asarray(sc.target_speed)
     p = sc.params
     S = sc.steps
     m = idx.size
