@@ -77,48 +77,46 @@ class PolicyTables:
 
     def touchdown(self, apex_height, ground) -> dict[str, np.ndarray]:
         """Per row, the touchdown of the policy's leg from the true ``apex_height`` onto the true
-        ``ground`` (relative to the apex's; arrays of ``rows``): ``t`` [s], the controls at that
-        instant (``touchdown_angle``, ``k_c``, ``k_d``), ``where`` (:data:`.swing_tables.IN_RANGE`,
-        ...) and ``status``, the plan code of the step: REACHED when both knots around the touchdown
-        reached the target, UNREACHABLE when one did not, :data:`OUT_OF_RANGE` outside the table."""
-        h = np.ascontiguousarray(np.broadcast_to(np.asarray(apex_height, dtype=float), (self.rows,)))
-        gr = np.ascontiguousarray(np.broadcast_to(np.asarray(ground, dtype=float), (self.rows,)))
-        t = np.empty(self.rows)
-        angle = np.empty(self.rows)
-        where = np.empty(self.rows, dtype=np.int64)
-        knot = np.empty(self.rows, dtype=np.int64)
+        ``ground`` (relative to the apex's; arrays of ``rows``, or of any length for tables of one
+        row): ``t`` [s], the controls at that instant (``touchdown_angle``, ``k_c``, ``k_d``),
+        ``where`` (:data:`.swing_tables.IN_RANGE`, ...) and ``status``, the plan code of the step:
+        REACHED when both knots around the touchdown reached the target, UNREACHABLE when one did
+        not, :data:`OUT_OF_RANGE` outside the table."""
+        h, gr = np.broadcast_arrays(np.asarray(apex_height, dtype=float), np.asarray(ground, dtype=float))
+        h, gr = np.ascontiguousarray(np.atleast_1d(h)), np.ascontiguousarray(np.atleast_1d(gr))
+        n = h.shape[0]
+        t, angle = np.empty(n), np.empty(n)
+        where, knot = np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int64)
         A, MA = self.values["touchdown_angle"], self.slopes["touchdown_angle"]
         args = (self.T, A, MA, self.counts, t, angle, where, knot)
         swing_tables.touchdown_rows(h, gr, self.g_f, self.q_r_td, *args)
         out = {"t": t, "touchdown_angle": angle, "where": where}
-        x = np.where(np.isfinite(t), t, 0.0)
-        for name in ("k_c", "k_d"):
-            out[name] = np.empty(self.rows)
-            swing_tables.evaluate_rows(
-                self.T, self.values[name], self.slopes[name], self.counts, x, out[name]
-            )
+        stiffness = self.controls_at(np.where(np.isfinite(t), t, 0.0))
+        out["k_c"], out["k_d"] = stiffness["k_c"], stiffness["k_d"]
         out["status"] = self._step_status(where, knot)
         return out
 
     def controls_at(self, t) -> dict[str, np.ndarray]:
-        """Every row's controls at time ``t`` [s] after the apex (one time per row)."""
-        x = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (self.rows,)))
+        """The controls at times ``t`` [s] after the apex: one time per row (or any number of times
+        for tables of one row)."""
+        x = np.ascontiguousarray(np.atleast_1d(np.asarray(t, dtype=float)))
         out = {}
         for name in _TABLE:
-            out[name] = np.empty(self.rows)
+            out[name] = np.empty(x.shape[0])
             swing_tables.evaluate_rows(
                 self.T, self.values[name], self.slopes[name], self.counts, x, out[name]
             )
         return out
 
     def _step_status(self, where, knot) -> np.ndarray:
-        """The plan code of each row's step from the knots around its touchdown."""
-        out = np.full(self.rows, OUT_OF_RANGE, dtype=np.int64)
-        r = np.flatnonzero(where == swing_tables.IN_RANGE)
-        lo = self.knots[r, knot[r]]
-        hi = self.knots[r, knot[r] + 1]
+        """The plan code of each touchdown from the knots around it (its table row, or the one row)."""
+        out = np.full(where.shape[0], OUT_OF_RANGE, dtype=np.int64)
+        i = np.flatnonzero(where == swing_tables.IN_RANGE)
+        r = np.minimum(i, self.rows - 1)
+        lo = self.knots[r, knot[i]]
+        hi = self.knots[r, knot[i] + 1]
         both = (self.status[r, lo] == compiled.REACHED) & (self.status[r, hi] == compiled.REACHED)
-        out[r] = np.where(both, compiled.REACHED, compiled.UNREACHABLE)
+        out[i] = np.where(both, compiled.REACHED, compiled.UNREACHABLE)
         return out
 
 
@@ -271,32 +269,17 @@ class SwingPolicy:
     def controls_at(self, t) -> dict[str, np.ndarray]:
         """The controls at times ``t`` [s] after the apex (an array): the table interpolated (module
         docstring)."""
-        x = np.atleast_1d(np.asarray(t, dtype=float))
-        tb = self._tables
-        out = {}
-        for name in _TABLE:
-            y = np.empty(x.size)
-            swing_tables.evaluate_rows(
-                np.broadcast_to(tb.T, (x.size, tb.T.shape[1])),
-                np.broadcast_to(tb.values[name], (x.size, tb.T.shape[1])),
-                np.broadcast_to(tb.slopes[name], (x.size, tb.T.shape[1])),
-                np.broadcast_to(tb.counts, (x.size,)),
-                x,
-                y,
-            )
-            out[name] = y.reshape(np.shape(t))
-        return out
+        shape = np.shape(t)
+        return {k: v.reshape(shape) for k, v in self._tables.controls_at(np.ravel(t)).items()}
 
     def touchdown(self, ground, apex_height=None) -> dict[str, np.ndarray]:
         """Where the policy's leg meets ``ground`` (an array, relative to the apex's ground) from
         ``apex_height`` (default the policy's): ``t`` [s], the controls at that instant,
         ``status`` (plan codes; :data:`OUT_OF_RANGE` outside the table)."""
-        g = np.atleast_1d(np.asarray(ground, dtype=float))
         h = self.apex_height if apex_height is None else apex_height
-        tb = self._tables
-        wide = _rows(tb, g.size)
-        out = wide.touchdown(np.broadcast_to(np.asarray(h, dtype=float), g.shape), g)
-        return {k: v.reshape(g.shape) for k, v in out.items()}
+        shape = np.broadcast_shapes(np.shape(ground), np.shape(h))
+        hh, gg = (np.ravel(np.broadcast_to(x, shape)) for x in (h, ground))
+        return {k: v.reshape(shape) for k, v in self._tables.touchdown(hh, gg).items()}
 
     def representation_error(self, per_interval: int = 4, plant: str | None = None) -> dict[str, float]:
         """What the table's interpolation adds to the next apex's error: on ``per_interval`` grounds
@@ -382,30 +365,6 @@ class SwingPolicy:
             f"SwingPolicy(model={self.model!r}, controls={self.controls}, grounds={self.grounds[-1]:.4g}.."
             f"{self.grounds[0]:.4g} m, knots={int(self.used.sum())}, status={counts})"
         )
-
-
-def _rows(tb: PolicyTables, n: int) -> PolicyTables:
-    """One policy's tables repeated for ``n`` touchdowns."""
-    rep = {
-        k: np.ascontiguousarray(np.broadcast_to(getattr(tb, k)[:1], (n, *getattr(tb, k).shape[1:])))
-        for k in ("grounds", "status", "map_status", "t", "touchdown_angle", "k_c", "k_d")
-    }
-    rep |= {
-        k: np.ascontiguousarray(np.broadcast_to(getattr(tb, k)[:1], (n, *getattr(tb, k).shape[1:])))
-        for k in ("next_height", "next_speed", "used", "knots", "T")
-    }
-    return PolicyTables(
-        **rep,
-        counts=np.full(n, tb.counts[0]),
-        values={
-            c: np.ascontiguousarray(np.broadcast_to(v[:1], (n, v.shape[1]))) for c, v in tb.values.items()
-        },
-        slopes={
-            c: np.ascontiguousarray(np.broadcast_to(v[:1], (n, v.shape[1]))) for c, v in tb.slopes.items()
-        },
-        q_r_td=tb.q_r_td,
-        g_f=tb.g_f,
-    )
 
 
 def swing_policy(

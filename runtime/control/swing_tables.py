@@ -109,9 +109,12 @@ def slopes_rows(T, Y, counts, M):
 
 @njit(cache=True, error_model="numpy")
 def evaluate_rows(T, Y, M, counts, x, out):
-    """Each row's interpolant at its time ``x[r]`` into ``out[r]``."""
-    for r in range(T.shape[0]):
-        out[r] = _value(T[r], Y[r], M[r], counts[r], x[r])
+    """The interpolant at each time ``x[i]`` into ``out[i]``: of table row i, or of the one row when the
+    tables have one."""
+    last = T.shape[0] - 1
+    for i in range(x.shape[0]):
+        r = min(i, last)
+        out[i] = _value(T[r], Y[r], M[r], counts[r], x[i])
 
 
 @njit(cache=True, error_model="numpy")
@@ -132,11 +135,14 @@ def touchdown_rows(h, ground, g, q, T, A, MA, counts, t_out, angle_out, where, k
     """Per row: the touchdown time ``t_out`` [s] and angle ``angle_out`` [rad] of the leg whose angle
     follows the table ``T``, ``A`` (slopes ``MA``) from apex height ``h[r]`` onto ``ground[r]``,
     ``where`` the touchdown falls (:data:`IN_RANGE`, ...) and ``knot`` the knot that begins its
-    interval (-1 outside the table); module docstring. A foot below the ground at
-    the apex gives t = NaN and the first knot's angle (the plant then reports the failure)."""
-    for r in range(T.shape[0]):
-        n = counts[r]
-        t, a, m = T[r], A[r], MA[r]
+    interval (-1 outside the table); module docstring. A foot below the ground at the apex gives
+    t = NaN and the first knot's angle (the plant then reports the failure). With one table row,
+    every apex and ground of ``h``, ``ground`` flies that one policy."""
+    last = T.shape[0] - 1
+    for r in range(h.shape[0]):
+        k = min(r, last)
+        n = counts[k]
+        t, a, m = T[k], A[k], MA[k]
         knot[r] = -1
         if n == 0:
             t_out[r] = math.nan
