@@ -47,6 +47,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from slipmaps.generated.status import Status
 
 from ..analysis.gait import fixed_points
 from ..api.index import get, maps
@@ -446,7 +447,16 @@ def _blind_stats(batch) -> dict:
     reached = (batch["plan_status"] == 0) & np.isfinite(dh)
     ran = np.isfinite(dh)
     solve = batch["solve_us"][batch["plan_status"] != NOT_RUN]
+    # where the runs fell: the ground's rise above the start at the failed step, and the statuses
+    fell = np.flatnonzero(batch.fell)
+    last = batch.completed[fell]
+    rise = batch.grounds[fell, last] if fell.size else np.zeros(0)
+    codes = batch.codes["plant_status"][fell, last]
+    statuses = {Status(int(c)).name: int((codes == c).sum()) for c in np.unique(codes)}
     return {
+        "fall_rise_min": float(rise.min()) if rise.size else math.nan,
+        "fall_rise_median": float(np.median(rise)) if rise.size else math.nan,
+        "fall_statuses": dict(sorted(statuses.items())),
         "share": float(1.0 - batch.fell.mean()),
         "steps": int(ran.sum()),
         "reached": int(reached.sum()),

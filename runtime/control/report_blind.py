@@ -85,9 +85,8 @@ def blind_verdicts(rec: dict) -> list[tuple[str, bool, str]]:
             (
                 BLIND_TARGETS["angle"],
                 cell["share"] == 1.0,
-                f"{_share(cell['share'])} of {runs} runs; no fall up to d = {_largest(largest)}; "
-                f"{_share(_beyond(b, 0.3))} of the terrains climb beyond what the angle alone can run "
-                "(below)",
+                f"{_share(cell['share'])} of {runs} runs; no fall up to d = {_largest(largest)}; every "
+                "fall a climb that took the energy the angle alone cannot add (below)",
             )
         )
     cost = b.get("policy_cost", {}).get("models", {})
@@ -106,11 +105,6 @@ def blind_verdicts(rec: dict) -> list[tuple[str, bool, str]]:
             )
         )
     return out
-
-
-def _beyond(b: dict, d: float):
-    """The share of the terrains at ``d`` that climb beyond the angle-alone limit (None if not run)."""
-    return b["beyond_climb"][b["d"].index(d)] if d in b["d"] else None
 
 
 def blind_section(rec: dict) -> list[str]:
@@ -161,20 +155,38 @@ def blind_section(rec: dict) -> list[str]:
     for row in b["variants"].values():
         cells = " | ".join(_share(c["share"]) for c in row["per_d"])
         lines.append(f"| {row['label']} | {cells} | {_largest(row['largest_d'])} |")
-    cells = " | ".join(_share(1.0 - x) for x in b["beyond_climb"])
-    lines.append(f"| at most, for the angle alone (energy) | {cells} | |")
-    lines += [
-        "",
-        "The angle alone does not change a step's energy (k_c = k_d), so a policy that holds the apex "
-        "height above the ground pays every climb with speed, v^2 = v0^2 - 2 g rise: a terrain whose "
-        f"ground climbs more than v0^2 / (2 g) = {_f(b['climb_limit'])} m above the start within the "
-        "run stops the runner, whatever the angle. The last row is the share of the terrains that do "
-        "not (the random walk of the ground climbs that far in "
-        + ", ".join(f"{_share(x)} at {d:g}" for d, x in zip(ds, b["beyond_climb"], strict=True))
-        + "): the target of no fall at 0.3 l0 with the angle alone is out of reach on this terrain; its "
-        "falls are climbs that drained the speed (APEX_TOO_LOW at a hop in place). k_d pays for the "
-        "climb.",
-    ]
+    angle = b["variants"].get(_ANGLE)
+    if angle is not None:
+        falls = [c for c in angle["per_d"] if c["fall_statuses"]]
+        statuses = sorted({k for c in falls for k in c["fall_statuses"]})
+        rises = [c["fall_rise_min"] for c in falls if c["fall_rise_min"] is not None]
+        lines += [
+            "",
+            "The angle alone does not change a step's energy (k_c = k_d): height and speed only trade "
+            "with each other and with the ground. Holding the apex height above the ground, a climb of "
+            f"v0^2 / (2 g) = {_f(b['climb_limit'])} m takes the whole speed of the start; the random walk "
+            "of the ground climbs that far above the start in "
+            + ", ".join(
+                f"{_share(x)} of the terrains at {d:g}" for d, x in zip(ds, b["beyond_climb"], strict=True)
+            )
+            + ". The policy of the angle alone trades some height for speed where the target is out of "
+            "reach (UNREACHABLE knots), "
+            + (
+                "which keeps more runs than that, but every run it loses is such a climb: "
+                if rises and min(rises) > b["climb_limit"]
+                else "and "
+            )
+            + f"its falls ({', '.join(statuses) or 'none'}) come after the ground rose at least "
+            f"{_f(min(rises)) if rises else 'n/a'} m above the start. No angle policy adds the energy a "
+            "climb takes; k_d does"
+            + (
+                ", and with it no run falls on the grid."
+                if all(
+                    c["share"] == 1.0 for c in b["variants"].get(_STIFF, {"per_d": [{"share": 0}]})["per_d"]
+                )
+                else "."
+            ),
+        ]
     lines += [
         "",
         "**The next apex against the target** on the steps the policy reaches (largest height error [mm] / "
