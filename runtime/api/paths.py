@@ -36,6 +36,19 @@ def writing(path: str | os.PathLike, what: str | None = None) -> Iterator[Path]:
         raise ValueError(f"{label}: {exc.strerror or exc}") from None
 
 
+def save_figure(fig, path: str | os.PathLike, dpi: int = 110) -> Path:
+    """Save a matplotlib figure to ``path`` (an OSError as :func:`writing`'s ValueError) and close it,
+    whatever happened; returns the path."""
+    import matplotlib.pyplot as plt
+
+    try:
+        with writing(path):
+            fig.savefig(path, dpi=dpi)
+    finally:
+        plt.close(fig)
+    return Path(path)
+
+
 def _probe(folder: Path) -> str | None:
     """Why a file cannot be created in ``folder`` (a probe created and removed), or None."""
     try:

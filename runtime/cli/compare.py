@@ -30,7 +30,7 @@ from ..api import index
 from ..api.maps import half_stance, stance, trajectory
 from ..api.numeric import num
 from ..api.params import HUMAN_RUNNER, SlipParams
-from ..api.paths import writing
+from ..api.paths import save_figure
 from ..api.results import Result
 from ..api.validate import leg_angle, non_negative, polar_state
 from ..studies.quantities import QUANTITIES
@@ -417,9 +417,5 @@ def plot(c: Comparison, path: str) -> str:
         + f", q_th_td={td[2]:.3f} rad"
     )
     fig.tight_layout()
-    try:
-        with writing(path):
-            fig.savefig(path, dpi=110)
-    finally:
-        plt.close(fig)
+    save_figure(fig, path)
     return path

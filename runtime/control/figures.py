@@ -94,7 +94,7 @@ def policy_figure(policy, out_path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from ..api.paths import writing
+    from ..api.paths import save_figure
 
     used = policy.used
     t = policy.t_touchdown
@@ -135,11 +135,7 @@ def policy_figure(policy, out_path):
         f"target {policy.target_height} m, {policy.target_speed} m/s",
         fontsize=10,
     )
-    try:
-        with writing(out_path):
-            fig.savefig(out_path, dpi=110)
-    finally:
-        plt.close(fig)
+    save_figure(fig, out_path)
     return out_path
 
 
@@ -177,13 +173,9 @@ def run_figure(run, out_path, *, title: str | None = None):
         if col == 0:
             a.legend(fontsize=8, frameon=False)
     _draw_swing(fig.add_subplot(grid[1, 2]), run)
-    from ..api.paths import writing
+    from ..api.paths import save_figure
 
-    try:
-        with writing(out_path):
-            fig.savefig(out_path, dpi=110)
-    finally:
-        plt.close(fig)
+    save_figure(fig, out_path)
     return out_path
 
 

@@ -18,7 +18,7 @@ import numpy as np
 
 from ..api.files import rounded
 from ..api.index import get
-from ..api.paths import writing
+from ..api.paths import save_figure, writing
 from .evaluation import D_MIN as EVAL_D_MIN
 from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
 from .report_blind import blind_figure, blind_section
@@ -391,11 +391,7 @@ def rough_figure(rec: dict, path) -> Path:
     fig.legend(handles, labels, loc="lower center", ncol=7, fontsize=8, frameon=False)
     fig.suptitle(f"Rough ground at 5 m/s, {r['steps']} steps per run", fontsize=11)
     fig.tight_layout(rect=(0, 0.1, 1, 0.96))
-    try:
-        with writing(path):
-            fig.savefig(path, dpi=110)
-    finally:
-        plt.close(fig)
+    save_figure(fig, path)
     return Path(path)
 
 

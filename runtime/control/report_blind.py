@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..api.paths import writing
+from ..api.paths import save_figure
 from .evaluation import BLIND_MASS, BLIND_NOISE
 from .evaluation import D_MIN as EVAL_D_MIN
 
@@ -286,9 +286,5 @@ def blind_figure(rec: dict, path) -> Path:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, frameon=False)
     ax.set_title(f"Running blind at {b['speed']:g} m/s, {b['steps']} steps per run", fontsize=10)
-    try:
-        with writing(path):
-            fig.savefig(path, dpi=110)
-    finally:
-        plt.close(fig)
+    save_figure(fig, path)
     return Path(path)

@@ -30,7 +30,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from ..api.paths import writing
+from ..api.paths import save_figure, writing
 from ..studies.accuracy_report import error_heatmaps
 from .facts import CLAIMS, TABLES, MissingData, Numbers, claims, need
 
@@ -164,11 +164,7 @@ def figure(records: dict, path: str | Path) -> Path:
     mesh = error_heatmaps(heat, axes)  # the color scale: the decades of the errors drawn
     fig.colorbar(mesh, ax=axes, label="next-apex error |(dh, dv)| / |(h, v)| (white: a side fails)")
     fig.suptitle(f"{heat['grid']}, apex height {heat['apex_height']:g} m", fontsize=11)
-    try:
-        with writing(path):
-            fig.savefig(path, dpi=90)
-    finally:
-        plt.close(fig)
+    save_figure(fig, path, dpi=90)
     return Path(path)
 
 
