@@ -87,10 +87,10 @@ def test_an_unguarded_oserror_is_one_line_and_exit_2(capsys, monkeypatch):
 def test_ctrl_c_on_run_prints_the_steps_already_run_and_exits_130(capsys, monkeypatch):
     step = runs._step
 
-    def interrupted(ctl, sc, n, *rest):
+    def interrupted(ctl, n, *rest):
         if n == 2:
             raise KeyboardInterrupt
-        return step(ctl, sc, n, *rest)
+        return step(ctl, n, *rest)
 
     monkeypatch.setattr(runs, "_step", interrupted)
     assert main(["run", STOP, "--no-figure", "--steps", "5"]) == 130
