@@ -491,7 +491,7 @@ class Deadbeat:
     stiffness's: ``params``, which are also the nominal values of the least-change preference) and
     the fixed value of a quantity that is not a control (the touchdown angle when only stiffnesses
     are controlled). ``budget=False`` leaves out the energy budget (``energy_low``, ``energy_high``,
-    ``authority`` NaN): two map evaluations fewer per solve (a swing policy's solves, :mod:`.swing`).
+    ``authority`` NaN): two map evaluations fewer per solve (``slipmaps.swing_policy``'s solves).
     """
 
     def __init__(

@@ -199,7 +199,7 @@ def check_memory(runs: int, steps: int, available: int | None = None) -> int:
 class RunBatch:
     """Many runs of one scenario (arrays runs x steps, NaN where a step did not run; module
     docstring). ``fell`` (runs,): a plant step failed; ``completed``: steps run; ``grounds``: the
-    terrain of each run; ``swing`` (runs x steps x :data:`SWING_SAMPLES`): the leg's angle over each
+    terrain of each run; ``swing`` (runs x steps x ``SWING_SAMPLES``): the leg's angle over each
     descent."""
 
     scenario: Scenario

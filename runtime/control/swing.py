@@ -21,7 +21,7 @@ which); MAP_FAILED (the map fails at every control tried: no knot, e.g. a ground
 from this apex). A knot whose touchdown time is not later than that of a higher ground is left out
 of the table (``used`` False): a leg's angle is one function of time, so the grounds must touch down
 in order of height. With ``controls=("touchdown_angle",)`` the stiffness is the nominal
-(``params.k_c``, ``params.k_d``) and the one target is the speed (:mod:`.deadbeat`).
+(``params.k_c``, ``params.k_d``) and the one target is the speed (``slipmaps.deadbeat``).
 """
 
 from __future__ import annotations
@@ -51,7 +51,7 @@ class PolicyTables:
     ``touchdown_angle``, ``k_c``, ``k_d`` and the model's next apex ``next_height``, ``next_speed``;
     ``used`` (the knot is in the table); the tables themselves: ``knots`` (rows x n, the used knots'
     indices into the grounds in increasing time, -1 padded), ``counts`` (rows), and per control the
-    knot times ``T`` and values and slopes (:mod:`.swing_tables`)."""
+    knot times ``T`` and values and slopes (``runtime/control/swing_tables.py``)."""
 
     grounds: np.ndarray
     status: np.ndarray
@@ -79,9 +79,9 @@ class PolicyTables:
         """Per row, the touchdown of the policy's leg from the true ``apex_height`` onto the true
         ``ground`` (relative to the apex's; arrays of ``rows``, or of any length for tables of one
         row): ``t`` [s], the controls at that instant (``touchdown_angle``, ``k_c``, ``k_d``),
-        ``where`` (:data:`.swing_tables.IN_RANGE`, ...) and ``status``, the plan code of the step:
+        ``where`` (``swing_tables.IN_RANGE``, ...) and ``status``, the plan code of the step:
         REACHED when both knots around the touchdown reached the target, UNREACHABLE when one did
-        not, :data:`OUT_OF_RANGE` outside the table."""
+        not, ``OUT_OF_RANGE`` (3) outside the table."""
         h, gr = np.broadcast_arrays(np.asarray(apex_height, dtype=float), np.asarray(ground, dtype=float))
         h, gr = np.ascontiguousarray(np.atleast_1d(h)), np.ascontiguousarray(np.atleast_1d(gr))
         n = h.shape[0]
@@ -275,7 +275,7 @@ class SwingPolicy:
     def touchdown(self, ground, apex_height=None) -> dict[str, np.ndarray]:
         """Where the policy's leg meets ``ground`` (an array, relative to the apex's ground) from
         ``apex_height`` (default the policy's): ``t`` [s], the controls at that instant,
-        ``status`` (plan codes; :data:`OUT_OF_RANGE` outside the table)."""
+        ``status`` (plan codes; ``OUT_OF_RANGE`` (3) outside the table)."""
         h = self.apex_height if apex_height is None else apex_height
         shape = np.broadcast_shapes(np.shape(ground), np.shape(h))
         hh, gg = (np.ravel(np.broadcast_to(x, shape)) for x in (h, ground))
@@ -382,10 +382,10 @@ def swing_policy(
     **map_options,
 ) -> SwingPolicy:
     """The swing-leg policy of one apex (module docstring): the controls ``controls``
-    (``("touchdown_angle",)``, or ``("touchdown_angle", "k_c", "k_d")``, any set :mod:`.deadbeat`
+    (``("touchdown_angle",)``, or ``("touchdown_angle", "k_c", "k_d")``, any set ``slipmaps.deadbeat``
     takes) as functions of the time since the apex, from ``n`` deadbeat solves of map ``model`` over
     the grounds ``grounds = (low, high)`` [m] relative to the ground under the apex; ``bounds`` and
-    ``map_options`` as :func:`~.deadbeat.deadbeat` takes them."""
+    ``map_options`` as ``slipmaps.deadbeat`` takes them."""
     ctl = _controller(model, params, controls, bounds, {"budget": False, **map_options})
     h = real("apex_height", apex_height)
     v = real("apex_speed", apex_speed)
