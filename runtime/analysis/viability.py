@@ -44,7 +44,7 @@ import numpy as np
 from ..api.params import SlipParams
 from ..api.validate import real_array
 from .viability_kernel import OUTSIDE, cells, viable_set
-from .viability_map import Grids, speeds_on_energy, transition
+from .viability_map import Grids, check_memory, speeds_on_energy, transition
 
 __all__ = ["ViableSet", "viability"]
 
@@ -270,6 +270,7 @@ def viability(
             f"map {call.info.name!r} takes one stiffness k: a k_d grid needs a variable-stiffness map "
             "(exact, iterative, geyer-vs)"
         )
+    check_memory(grids)
     tm = transition(name, params, grids, ground=float(ground), progress=progress, options=options)
     start = time.perf_counter()
     state_grids = list(grids.states.values())

@@ -30,7 +30,7 @@ from ..api.maps import apex_return_batch
 from ..api.params import SlipParams
 from ..api.progress import Bar
 
-__all__ = ["CHUNK_ROWS", "Grids", "Transition", "speeds_on_energy", "transition"]
+__all__ = ["CHUNK_ROWS", "Grids", "Transition", "check_memory", "speeds_on_energy", "transition"]
 
 #: Rows (state-action pairs) per batch call: bounds the batch's output (~20 float64 columns).
 CHUNK_ROWS = 2_000_000
@@ -66,6 +66,28 @@ class Transition:
     status: np.ndarray
     next_state: np.ndarray
     seconds: float
+
+
+def check_memory(grids: Grids, available: int | None = None) -> int:
+    """The bytes a study of ``grids`` holds (per pair: ``failed``, ``status``, ``viable`` and a
+    temporary, 1 byte each, the cell index, 4, the next state, 8 per state dimension; and one batch
+    call's chunk); ValueError (one line with the estimate) when it exceeds ``available`` (default:
+    the machine's available memory)."""
+    import os
+
+    pairs = int(np.prod(grids.state_shape)) * int(np.prod(grids.action_shape))
+    need = pairs * (8 + 8 * len(grids.states)) + CHUNK_ROWS * 8 * 24
+    if available is None:
+        try:
+            available = os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+        except (ValueError, OSError, AttributeError):
+            return need
+    if need > available:
+        raise ValueError(
+            f"the grid's {pairs:,} state-action pairs need about {need / 1e9:.3g} GB of memory, more than "
+            f"the {available / 1e9:.3g} GB available: use coarser grids"
+        )
+    return need
 
 
 def speeds_on_energy(params: SlipParams, energy: float, heights: np.ndarray) -> np.ndarray:
