@@ -236,7 +236,8 @@ def test_cli_json_has_a_row_per_state(tmp_path, capsys):
 @pytest.mark.parametrize(
     ("argv", "words"),
     [
-        (["--vibly", "--energy", "100"], "--vibly sets the grids"),
+        (["--vibly", "--energy", "100"], "--vibly sets the parameters and the grids"),
+        (["--vibly", "--k", "9000"], "give no --k with it"),
         (["--energy", "100", "--speeds", "1", "2", "3"], "not both"),
         (["--s", "0.1", "0.9", "10", "--speeds", "1", "2", "3"], "--s needs --energy"),
         (["--angles-deg", "0", "60", "2.5"], "N a whole number"),

@@ -51,7 +51,7 @@ __all__ = ["ViableSet", "viability"]
 
 @dataclass(frozen=True, eq=False)
 class ViableSet:
-    """A viability study on a grid (:func:`viability`): arrays over states (S) or states x actions (Q).
+    """A viability study on a grid (``slipmaps.viability``): arrays over states (S) or states x actions (Q).
 
     ``failed`` (Q, bool: the step fails), ``status`` (Q, int8 :class:`~slipmaps.Status` codes; OK
     where only the next speed failed), ``next_state`` (Q x state dims, NaN where failed), ``viable``
@@ -106,7 +106,7 @@ class ViableSet:
         return out
 
     def to_pandas(self):
-        """:meth:`columns` as a pandas DataFrame (pandas: the ``test`` extra)."""
+        """``columns()`` as a pandas DataFrame (pandas: the ``test`` extra)."""
         import pandas as pd
 
         return pd.DataFrame(self.columns())
@@ -175,7 +175,10 @@ class ViableSet:
         return out
 
     def plot(self, path):
-        """Write the figure (:func:`.viability_figure.figure`) to ``path``; returns the path."""
+        """Write the figure to ``path`` (its suffix chooses the format; returns the path): at a fixed
+        energy the state-action plane (failing, leaving the kernel, viable) with the kernel and the
+        measure beside it; on (height, speed) the share of safe actions and the measure as images
+        with the kernel's outline."""
         from .viability_figure import figure
 
         return figure(self, path)
@@ -248,14 +251,27 @@ def viability(
     progress: bool | None = None,
     **options,
 ) -> ViableSet:
-    """The viable set, the viability kernel and the measure of map ``name`` on a grid (module
-    docstring).
+    """The viable set Q_V, the viability kernel S_V and the measure of map ``name`` on a grid.
 
-    ``apex_height`` [m], ``apex_speed`` [m/s], ``touchdown_angle`` [rad], ``k_d`` [N/m] and
-    ``retraction_rate`` [rad/s] are 1-D increasing grids; give ``apex_speed`` or ``energy`` [J], not
-    both. ``ground`` [m] is the touchdown ground's height (every step). ``outside``: ``"fail"`` (a
-    next state beyond the grid is not viable) or ``"edge"`` (vibly: judged by the edge node).
-    ``options`` are the map's (``iterations=20``). ValueError names a bad argument.
+    ``apex_height`` [m], ``apex_speed`` [m/s], ``touchdown_angle`` [rad, from the vertical,
+    counterclockwise positive], ``k_d`` [N/m] and ``retraction_rate`` [rad/s] are 1-D increasing
+    grids. The state is the apex height at the fixed flight ``energy`` E = m (g_f h + v^2/2) [J]
+    (the step must conserve it: k_c = k_d, g_s = g_f, q_r_td = q_r_lo; no ``k_d`` grid), or the apex
+    height and speed (``apex_speed`` given); give one of ``apex_speed`` and ``energy``. The actions:
+    the touchdown angle, then k_d (the parameters' k_c kept) and the retraction rate when given.
+    ``ground`` [m] is the touchdown ground's height every step; ``options`` the map's
+    (``iterations=20``).
+
+    A step fails, as in Heim and Spröwitz's SLIP: the foot would start underground (no
+    touchdown), the body falls (any status that is not OK: a fall, no flight after the stance, a
+    backward liftoff, a map that does not converge), or the next apex speed is not positive. A
+    pair is viable when every grid node of the cell its next state falls in is in the kernel
+    estimate (``np.digitize`` per dimension, as vibly); a next state beyond the grid is not viable
+    with ``outside="fail"`` (the default) and judged by the edge node with ``outside="edge"``
+    (vibly's rule: it reproduces vibly's published SLIP sets exactly). The estimate starts at the
+    states with a step that does not fail and is iterated until it no longer changes. The
+    measure of a state is the share of its actions in Q_V. ValueError names a bad argument, and
+    a grid larger than the machine's memory.
     """
     import time
 

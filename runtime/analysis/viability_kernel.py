@@ -12,7 +12,7 @@ edge node(s) alone).
 Iteration (vibly's ``compute_QV``): Q_V starts as the pairs that do not fail, S_V as the states with
 a pair in Q_V; each round keeps the pairs whose cell is viable under S_V and projects again, until S_V
 no longer changes. Every round removes pairs only, so it ends, at the largest set that is its own
-image (the kernel is a fixed point: :func:`is_fixed_point`). The measure of a state is the share of
+image (the kernel is a fixed point: ``is_fixed_point``). The measure of a state is the share of
 its actions in Q_V (vibly's ``project_Q2S(Q_V, proj_opt=np.mean)``).
 """
 
@@ -67,7 +67,7 @@ def cell_viable(kernel: np.ndarray, outside: str = "fail") -> np.ndarray:
 
 
 def viable_set(failed: np.ndarray, cell: np.ndarray, n_state_dims: int, outside: str = "fail") -> Kernel:
-    """Q_V, S_V and the measure of a transition map (``failed`` and its :func:`cells`), iterated to
+    """Q_V, S_V and the measure of a transition map (``failed`` and its ``cells``), iterated to
     the fixed point (module docstring)."""
     if outside not in OUTSIDE:
         raise ValueError(f"outside must be one of {', '.join(OUTSIDE)}, got {outside!r}")

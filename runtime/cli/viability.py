@@ -106,11 +106,14 @@ def _study(args: argparse.Namespace) -> tuple[str, object, dict]:
     from .args import map_options, params_of
 
     if args.vibly:
-        given = [
-            f for f in ("energy", "heights", "s", "speeds", "angles_deg", "k_d_grid") if getattr(args, f)
-        ]
+        from slipmaps.derive import params as table
+
+        flags = ("energy", "heights", "s", "speeds", "angles_deg", "k_d_grid")
+        flags += tuple(r["name"] for r in table.PARAMETERS) + tuple(table.ALIASES)
+        given = [f for f in flags if getattr(args, f, None) is not None]
         if given:
-            raise ValueError(f"--vibly sets the grids: give no --{given[0].replace('_', '-')} with it")
+            flag = "--" + given[0].replace("_", "-")
+            raise ValueError(f"--vibly sets the parameters and the grids: give no {flag} with it")
         params = SlipParams(**VIBLY["params"])
         args.energy, args.s, args.angles_deg = VIBLY["energy"], VIBLY["s"], VIBLY["angles_deg"]
     else:
