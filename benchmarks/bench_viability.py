@@ -13,6 +13,8 @@ Parts (``--part``, repeatable; default all but ``scale``):
 - ``stiffness``: what a free k_d buys, on (height, speed) grids, vibly's runner and the human
   runner: the kernel and the measure with k_d = k_c against k_d on [k/2, 2k] (``--n`` points per
   axis), both discretisations (``outside`` fail and edge).
+- ``maps2d``: ``iterative`` and ``geyer-vs`` against the exact map on the stiffness part's (height,
+  speed) grid of vibly's runner with k_d free.
 - ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``): seconds and
   peak memory (ru_maxrss).
 
@@ -173,8 +175,14 @@ def _stiffness_case(params, heights, speeds, angles, k_d) -> dict:
         row = {}
         for label, vs in (("k_d = k_c", fixed), ("k_d free", free)):
             safe = (~vs.failed).any(axis=tuple(range(2, vs.failed.ndim)))
+            angles_ok = (
+                vs.viable.any(axis=tuple(range(3, vs.viable.ndim))) if vs.viable.ndim > 3 else vs.viable
+            )
             row[label] = {
                 "kernel_states": int(vs.kernel.sum()),
+                "mean_angle_share_in_kernel": float(angles_ok.mean(axis=2)[vs.kernel].mean())
+                if vs.kernel.any()
+                else 0.0,
                 "states_with_a_safe_step": int(safe.sum()),
                 "mean_measure_in_kernel": float(vs.measure[vs.kernel].mean()) if vs.kernel.any() else 0.0,
                 "measure_max": float(vs.measure.max()),
@@ -210,7 +218,7 @@ def per_level(params, heights, speeds, angles, levels: int = 80) -> dict:
     }
 
 
-def part_stiffness(n: int) -> dict:
+def part_stiffness(n: int, levels: bool = True) -> dict:
     angles = np.radians(np.linspace(-10.0, 70.0, 2 * n + 1))
     human = slipmaps.HUMAN_RUNNER
     cases = {
@@ -230,6 +238,9 @@ def part_stiffness(n: int) -> dict:
             },
             **_stiffness_case(params, heights, speeds, angles, np.linspace(k / 2, 2 * k, 5)),
         }
+        if not levels:
+            print(label, out[label], flush=True)
+            continue
         t = time.perf_counter()
         out[label]["k_d = k_c per energy level"] = per_level(params, heights, speeds, angles)
         out[label]["k_d = k_c per energy level"]["seconds"] = time.perf_counter() - t
@@ -237,11 +248,29 @@ def part_stiffness(n: int) -> dict:
     return out
 
 
-def part_scale(n: int, name: str) -> dict:
+def part_maps2d(n: int) -> dict:
+    """The variable-stiffness maps against the exact one on vibly's (height, speed) grid with k_d free
+    (the stiffness part's grid)."""
+    grid = {
+        "apex_height": np.linspace(0.5, 2.4, n),
+        "apex_speed": np.linspace(0.5, 7.0, n),
+        "touchdown_angle": np.radians(np.linspace(-10.0, 70.0, 2 * n + 1)),
+        "k_d": np.linspace(4100.0, 16400.0, 5),
+    }
+    ref = slipmaps.viability("exact", VIBLY, **grid)
+    out = {"exact": {"kernel_states": int(ref.kernel.sum()), "viable_pairs": int(ref.viable.sum())}}
+    for name in ("iterative", "geyer-vs"):
+        t = time.perf_counter()
+        vs = slipmaps.viability(name, VIBLY, **grid)
+        out[name] = {"seconds": time.perf_counter() - t, **_compare(vs, ref)}
+    return out
+
+
+def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
     heights = np.linspace(0.5, 2.4, n)
     speeds = np.linspace(0.5, 7.0, n)
     angles = np.radians(np.linspace(-10.0, 70.0, n))
-    k_d = np.linspace(4100.0, 16400.0, n)
+    k_d = np.linspace(4100.0, 16400.0, n if n_k_d is None else n_k_d)
     grid = {"apex_height": heights, "apex_speed": speeds, "touchdown_angle": angles[:2], "k_d": k_d[:2]}
     slipmaps.viability(name, VIBLY, **grid)  # compile or load
     t = time.perf_counter()
@@ -264,12 +293,14 @@ def part_scale(n: int, name: str) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--part", action="append", choices=("vibly", "maps", "stiffness", "scale"))
+    ap.add_argument("--part", action="append", choices=("vibly", "maps", "maps2d", "stiffness", "scale"))
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--n", type=int, default=30, help="points per axis (stiffness, scale)")
     ap.add_argument("--scale-map", default="exact")
+    ap.add_argument("--scale-k-d", type=int, default=None, help="k_d points of the scale grid (default --n)")
     ap.add_argument("--json", default=None, help="write the results here too")
     ap.add_argument("--figure", default=None, help="the maps' figure (part maps)")
+    ap.add_argument("--no-levels", action="store_true", help="stiffness: skip the per-level kernels")
     args = ap.parse_args()
     parts = args.part or ["vibly", "maps", "stiffness"]
     out = {"machine": {"cpus": __import__("os").cpu_count(), "load": __import__("os").getloadavg()}}
@@ -278,10 +309,12 @@ def main() -> None:
             out["vibly"] = part_vibly(args.repeat)
         elif part == "maps":
             out["maps"] = part_maps(args.figure)
+        elif part == "maps2d":
+            out["maps2d"] = part_maps2d(args.n)
         elif part == "stiffness":
-            out["stiffness"] = part_stiffness(args.n)
+            out["stiffness"] = part_stiffness(args.n, not args.no_levels)
         else:
-            out["scale"] = part_scale(args.n, args.scale_map)
+            out["scale"] = part_scale(args.n, args.scale_map, args.scale_k_d)
         print(json.dumps({part: out[part]}, indent=1), flush=True)
     out["machine"]["load_after"] = __import__("os").getloadavg()
     if args.json:

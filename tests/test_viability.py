@@ -181,6 +181,27 @@ def test_a_constant_stiffness_kernel_erodes_on_a_height_speed_grid():
     assert free.kernel.sum() > free.kernel.size // 2
 
 
+def test_a_retraction_rate_axis_at_rate_zero_is_the_held_leg():
+    """Actions angle x retraction rate: the rate 0 column is the study without the axis (the same
+    steps, bit for bit), and a retracting leg changes some steps."""
+    heights = HEIGHTS[::12]
+    angles = ANGLES[::10]
+    held = slipmaps.viability("exact", VIBLY, apex_height=heights, touchdown_angle=angles, energy=ENERGY)
+    swung = slipmaps.viability(
+        "exact",
+        VIBLY,
+        apex_height=heights,
+        touchdown_angle=angles,
+        energy=ENERGY,
+        retraction_rate=[-1.0, 0.0],
+    )
+    assert swung.action_names == ("touchdown_angle", "retraction_rate")
+    assert swung.failed.shape == (heights.size, angles.size, 2)
+    assert np.array_equal(swung.failed[..., 1], held.failed)
+    assert np.array_equal(swung.next_state[..., 1, :], held.next_state, equal_nan=True)
+    assert not np.array_equal(swung.failed[..., 0], held.failed)
+
+
 def test_per_state_results_as_frame_and_dict(demo):
     frame = demo.to_pandas()
     assert len(frame) == 180 and frame["kernel"].sum() == 170

@@ -27,6 +27,9 @@ __all__ = ["OUTSIDE", "Kernel", "cells", "cell_viable", "is_fixed_point", "viabl
 #: How a next state beyond the grid is judged (module docstring).
 OUTSIDE = ("fail", "edge")
 
+#: Pairs per block of :func:`cells`.
+BLOCK = 4_000_000
+
 
 @dataclass(frozen=True)
 class Kernel:
@@ -42,17 +45,25 @@ class Kernel:
 def cells(next_state: np.ndarray, failed: np.ndarray, grids: list[np.ndarray]) -> np.ndarray:
     """The flat cell index (int32 or int64) of every pair's next state on ``grids``: per dimension
     ``np.digitize`` (0 below the grid, ``len(grid)`` above it), raveled over (len + 1) per
-    dimension; a failed pair gets one index past the last cell (never viable)."""
+    dimension; a failed pair gets one index past the last cell (never viable). Computed in blocks of
+    :data:`BLOCK` pairs, so the temporaries stay small beside the result."""
     shape = tuple(g.size + 1 for g in grids)
     total = int(np.prod(shape))
     dtype = np.int32 if total < 2**31 - 1 else np.int64
-    flat = np.zeros(failed.shape, dtype=dtype)
-    for dim, grid in enumerate(grids):
-        x = np.where(failed, grid[0], next_state[..., dim])
-        b = np.digitize(x, grid).astype(dtype)
-        flat = flat * dtype(shape[dim]) + b
-    flat[failed] = total
-    return flat
+    out = np.empty(failed.shape, dtype=dtype)
+    flat_out = out.reshape(-1)
+    flat_failed = failed.reshape(-1)
+    flat_next = next_state.reshape(-1, len(grids))
+    for start in range(0, flat_failed.size, BLOCK):
+        block = slice(start, start + BLOCK)
+        bad = flat_failed[block]
+        flat = np.zeros(bad.size, dtype=dtype)
+        for dim, grid in enumerate(grids):
+            x = np.where(bad, grid[0], flat_next[block, dim])
+            flat = flat * dtype(shape[dim]) + np.digitize(x, grid).astype(dtype)
+        flat[bad] = total
+        flat_out[block] = flat
+    return out
 
 
 def cell_viable(kernel: np.ndarray, outside: str = "fail") -> np.ndarray:
