@@ -96,6 +96,7 @@ def speeds_on_energy(params: SlipParams, energy: float, heights: np.ndarray) -> 
 
 
 def _chunks(n_states: int, per_state: int) -> list[slice]:
+    """Slices of the states, each with at most :data:`CHUNK_ROWS` rows of ``per_state`` pairs per call."""
     size = max(1, CHUNK_ROWS // max(per_state, 1))
     return [slice(i, min(i + size, n_states)) for i in range(0, n_states, size)]
 
@@ -138,7 +139,7 @@ def transition(
         if stiffnesses is None
         else [(j, params.with_(k_d=float(k))) for j, k in enumerate(stiffnesses)]
     )
-    chunks = _chunks(n_states, per_state)
+    chunks = _chunks(n_states, per_state // (1 if stiffnesses is None else stiffnesses.size))
     start = time.perf_counter()
     with Bar(len(calls) * n_states, f"viability: {name}", progress, unit="states") as bar:
         for j, p in calls:
