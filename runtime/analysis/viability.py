@@ -46,7 +46,7 @@ from ..api.validate import real_array
 from .viability_kernel import OUTSIDE, cells, viable_set
 from .viability_map import Grids, check_memory, speeds_on_energy, transition
 
-__all__ = ["ViableSet", "viability"]
+__all__ = ["ViableSet", "checked", "from_transition", "viability"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -273,8 +273,18 @@ def viability(
     measure of a state is the share of its actions in Q_V. ValueError names a bad argument, and
     a grid larger than the machine's memory.
     """
-    import time
+    grids, call = checked(
+        name, params, apex_height, touchdown_angle, apex_speed, energy, k_d, retraction_rate, outside, options
+    )
+    tm = transition(name, params, grids, ground=float(ground), progress=progress, options=options)
+    return from_transition(call, params, grids, tm, outside)
 
+
+def checked(
+    name, params, apex_height, touchdown_angle, apex_speed, energy, k_d, retraction_rate, outside, options
+):
+    """``(grids, call)`` of a study, every argument checked before any work (ValueError naming it):
+    the grids, the map and its options, a k_d grid's map, the memory the grid needs."""
     from ..api.calls import Call
 
     if outside not in OUTSIDE:
@@ -287,7 +297,13 @@ def viability(
             "(exact, iterative, geyer-vs)"
         )
     check_memory(grids)
-    tm = transition(name, params, grids, ground=float(ground), progress=progress, options=options)
+    return grids, call
+
+
+def from_transition(call, params: SlipParams, grids: Grids, tm, outside: str) -> ViableSet:
+    """The study of a computed transition map ``tm``: its cells, the fixed point and the measure."""
+    import time
+
     start = time.perf_counter()
     state_grids = list(grids.states.values())
     cell = cells(tm.next_state, tm.failed, state_grids)

@@ -59,6 +59,7 @@ _EXPORTS = {
     "FixedPoint": "slipmaps.runtime.analysis.gait",
     "viability": "slipmaps.runtime.analysis.viability",
     "ViableSet": "slipmaps.runtime.analysis.viability",
+    "viability_sweep": "slipmaps.runtime.sweep.viability",
     "Result": "slipmaps.runtime.api.results",
     "BatchResult": "slipmaps.runtime.api.results",
     "Status": "slipmaps.generated.status",
