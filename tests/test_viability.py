@@ -310,6 +310,20 @@ def test_cli_json_has_a_row_per_state(tmp_path, capsys):
     assert 0 < data["summary"]["kernel_states"] < 30 and data["written"] == []
 
 
+def test_cli_sweep_out_writes_the_sweep_and_the_same_arrays(tmp_path, capsys):
+    grid = ["--m", "80", "--k", "8200", "--heights", "0.5", "2.4", "8", "--speeds", "0.5", "7", "7"]
+    grid += ["--angles-deg", "-10", "70", "11", "--k-d-grid", "4100", "16400", "3", "--no-figure"]
+    assert main(["viability", *grid, "--out", str(tmp_path / "a.npz")]) == 0
+    assert (
+        main(["viability", *grid, "--out", str(tmp_path / "b.npz"), "--sweep-out", str(tmp_path / "s")]) == 0
+    )
+    a, b = np.load(tmp_path / "a.npz"), np.load(tmp_path / "b.npz")
+    assert a["viable"].shape == (8, 7, 11, 3) and a["kernel"].any()
+    assert all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.files)
+    assert (tmp_path / "s" / "manifest.json").is_file()
+    capsys.readouterr()
+
+
 @pytest.mark.parametrize(
     ("argv", "words"),
     [
@@ -321,6 +335,8 @@ def test_cli_json_has_a_row_per_state(tmp_path, capsys):
         (["--out", "x.csv"], "--out"),
         (["--map", "nope"], "nope"),
         (["--energy", "1877", "--k-d-grid", "8000", "9000", "2"], "changes the energy"),
+        (["--scheduler", "local:2"], "give --sweep-out too"),
+        (["--vibly", "--sweep-out", "sw"], "--sweep-out needs a (height, speed) grid"),
     ],
 )
 def test_cli_user_errors_are_one_line_and_exit_2(tmp_path, capsys, monkeypatch, argv, words):

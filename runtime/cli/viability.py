@@ -8,14 +8,16 @@ counterclockwise positive: a forward runner's are positive), optionally k_d (``-
 [N/m]) and retraction rates (``--retraction-rates MIN MAX N`` [rad/s]). ``--vibly`` is Heim and
 Spröwitz's SLIP demo (m 80 kg, k 8200 N/m, l0 1 m, E 1877.08 J, s on 180 points in [0.1, 0.995],
 angles -10 ... 70 deg in 161 steps), with ``--outside edge`` it is vibly's algorithm to the bit.
-Without a grid: the human runner at the energy of a 1 m, 5 m/s apex, 100 heights up to 99.5 % of the
-energy, angles 0 ... 60 deg in 121 steps.
+Without a grid: the human runner at the energy of a 1 m, 5 m/s apex, 100 heights from 0.3 l0 to 99.5 %
+of the energy's height, angles 0 ... 60 deg in 121 steps.
 
 Prints the sizes, the kernel's extent and where the measure peaks (``--json``: the summary and a row
 per state), writes a figure (the viable set as an image, the kernel and the measure beside it;
 ``--figure PATH``, default ``slipmaps_viability.png``; ``--no-figure``) and with ``--out PATH.npz``
-every array. Paths are checked before any work, and so is the memory the grid needs. Exit status: 0
-done, 2 a user error (one line on standard error), 130 interrupted.
+every array. ``--sweep-out DIR`` computes the steps of a (height, speed) grid as a resumable sweep
+into DIR (:func:`slipmaps.viability_sweep`), ``--scheduler local:N`` on a local Dask cluster. Paths
+are checked before any work, and so is the memory the grid needs. Exit status: 0 done, 2 a user
+error (one line on standard error), 130 interrupted.
 """
 
 from __future__ import annotations
@@ -80,6 +82,19 @@ def add_parser(sub) -> argparse.ArgumentParser:
         default="fail",
         help="a next state beyond the grid: not viable (fail, default) or judged by the edge node "
         "(edge, vibly)",
+    )
+    w = p.add_argument_group("on the sweep machinery (a grid with --speeds)")
+    w.add_argument(
+        "--sweep-out",
+        default=None,
+        metavar="DIR",
+        help="compute the steps as a resumable sweep into DIR (slipmaps.viability_sweep)",
+    )
+    w.add_argument(
+        "--scheduler",
+        default=None,
+        help="where the sweep's chunks run: inprocess (default), local:N (a local Dask cluster) or a "
+        "dask scheduler address",
     )
     p.add_argument("--figure", default="slipmaps_viability.png", help="the figure (default %(default)s)")
     p.add_argument("--no-figure", action="store_true", help="do not write the figure")
@@ -184,7 +199,21 @@ def run(args: argparse.Namespace) -> int:
     if args.out is not None:
         out = writable_file("--out", args.out, ("npz",), described="a NumPy archive", example="viability")
     name, params, kw = _study(args)
-    vs = viability(name, params, progress=False if args.no_progress else None, **kw)
+    progress = False if args.no_progress else None
+    if args.scheduler is not None and args.sweep_out is None:
+        raise ValueError("--scheduler runs the sweep of --sweep-out DIR: give --sweep-out too")
+    if args.sweep_out is not None:
+        if "energy" in kw:
+            raise ValueError(
+                "--sweep-out needs a (height, speed) grid: give --speeds, not --energy or --vibly"
+            )
+        from ..api.paths import writable_dir
+        from ..sweep.viability import viability_sweep
+
+        out_dir = writable_dir("--sweep-out", args.sweep_out)
+        vs = viability_sweep(name, params, out=out_dir, scheduler=args.scheduler, progress=progress, **kw)
+    else:
+        vs = viability(name, params, progress=progress, **kw)
     written = []
     if figure:
         written.append(str(vs.plot(figure)))
