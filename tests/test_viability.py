@@ -258,6 +258,27 @@ def test_the_sweep_path_refuses_a_fixed_energy(tmp_path):
     assert list(tmp_path.iterdir()) == []  # refused before any work
 
 
+def test_plots_of_a_height_speed_set_and_of_extra_action_axes(tmp_path):
+    """The (height, speed) figure and the fixed-energy figure with a retraction axis (projected) are
+    written as images."""
+    grid = {k: v for k, v in SWEEP_GRID.items() if k != "retraction_rate"}
+    free = slipmaps.viability("exact", VIBLY, **grid)
+    swung = slipmaps.viability(
+        "exact",
+        VIBLY,
+        apex_height=HEIGHTS[::6],
+        touchdown_angle=ANGLES[::4],
+        energy=ENERGY,
+        retraction_rate=[-1.0, 0.0],
+    )
+    assert free.kernel.any() and swung.kernel.any()
+    for vs, name in ((free, "free.png"), (swung, "swung.svg")):
+        path = vs.plot(tmp_path / name)
+        assert path.stat().st_size > 10_000
+    assert (tmp_path / "free.png").read_bytes()[:4] == b"\x89PNG"
+    assert b"<svg" in (tmp_path / "swung.svg").read_bytes()[:1000]
+
+
 def test_per_state_results_as_frame_and_dict(demo):
     frame = demo.to_pandas()
     assert len(frame) == 180 and frame["kernel"].sum() == 170
