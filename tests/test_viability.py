@@ -279,6 +279,23 @@ def test_plots_of_a_height_speed_set_and_of_extra_action_axes(tmp_path):
     assert b"<svg" in (tmp_path / "swung.svg").read_bytes()[:1000]
 
 
+def test_the_bisected_boundary_lies_between_its_nodes_above_the_touchdown_limit():
+    """vibly's grid (beyond it not viable): one edge, between s = 0.145 and 0.15; 30 halvings leave a
+    bracket 2^-30 of the grid step wide, whose ends the predicate tells apart, above the touchdown
+    limit l0 cos 70 deg (below it no angle of the grid touches down: no step at all)."""
+    from slipmaps.runtime.analysis.viability_boundary import viable_somewhere
+
+    vs = slipmaps.viability("exact", VIBLY, apex_height=HEIGHTS, touchdown_angle=ANGLES, energy=ENERGY)
+    b = vs.boundary(30)
+    assert b.axis.tolist() == [0] and b.inside.tolist() == [[10]] and b.outside.tolist() == [[9]]
+    step = HEIGHTS[1] - HEIGHTS[0]
+    assert HEIGHTS[9] < b.low[0] < b.high[0] < HEIGHTS[10]
+    assert b.high[0] - b.low[0] <= step * 2.0**-30 * 1.01
+    assert b.low[0] > VIBLY.l0 * math.cos(math.radians(70.0))
+    ends = viable_somewhere(vs, np.array([[b.low[0]], [b.high[0]]]))
+    assert ends.tolist() == [False, True]
+
+
 def test_per_state_results_as_frame_and_dict(demo):
     frame = demo.to_pandas()
     assert len(frame) == 180 and frame["kernel"].sum() == 170

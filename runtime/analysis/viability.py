@@ -59,8 +59,8 @@ class ViableSet:
     where only the next speed failed), ``next_state`` (Q x state dims, NaN where failed), ``viable``
     (Q_V), ``kernel`` (S_V), ``measure`` (S, the share of viable actions), ``states`` and ``actions``
     (the grids by name), ``energy`` [J] or None, ``map``, ``params``, ``options``, ``outside``,
-    ``rounds`` of the fixed-point iteration and ``seconds`` (``map``: the steps, ``kernel``: the
-    iteration)."""
+    ``rounds`` of the fixed-point iteration, ``seconds`` (``map``: the steps, ``kernel``: the
+    iteration) and the touchdown ``ground`` [m]."""
 
     map: str
     params: SlipParams
@@ -77,6 +77,7 @@ class ViableSet:
     rounds: int
     outside: str
     seconds: dict[str, float] = field(default_factory=dict)
+    ground: float = 0.0
 
     @property
     def state_names(self) -> tuple[str, ...]:
@@ -175,6 +176,16 @@ class ViableSet:
         if self.energy is not None:
             out["energy"] = np.float64(self.energy)
         return out
+
+    def boundary(self, iterations: int = 20):
+        """The kernel's boundary between the grid's nodes, by bisection: on every edge of the grid
+        whose two nodes the kernel separates, the state where "some action of the grid steps into a
+        viable cell" stops holding, bracketed ``iterations`` halvings finer than the grid (one batch
+        of the map per halving); a ``Boundary`` with ``axis``, ``inside``, ``outside``, ``low``,
+        ``high`` and ``position`` per edge."""
+        from .viability_boundary import boundary
+
+        return boundary(self, iterations)
 
     def plot(self, path):
         """Write the figure to ``path`` (its suffix chooses the format; returns the path): at a fixed
@@ -279,7 +290,7 @@ def viability(
         name, params, apex_height, touchdown_angle, apex_speed, energy, k_d, retraction_rate, outside, options
     )
     tm = transition(name, params, grids, ground=float(ground), progress=progress, options=options)
-    return from_transition(call, params, grids, tm, outside)
+    return from_transition(call, params, grids, tm, outside, float(ground))
 
 
 def checked(
@@ -302,7 +313,9 @@ def checked(
     return grids, call
 
 
-def from_transition(call, params: SlipParams, grids: Grids, tm, outside: str) -> ViableSet:
+def from_transition(
+    call, params: SlipParams, grids: Grids, tm, outside: str, ground: float = 0.0
+) -> ViableSet:
     """The study of a computed transition map ``tm``: its cells, the fixed point and the measure."""
     import time
 
@@ -327,4 +340,5 @@ def from_transition(call, params: SlipParams, grids: Grids, tm, outside: str) ->
         k.rounds,
         outside,
         seconds,
+        ground,
     )

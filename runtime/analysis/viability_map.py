@@ -30,7 +30,7 @@ from ..api.maps import apex_return_batch
 from ..api.params import SlipParams
 from ..api.progress import Bar
 
-__all__ = ["CHUNK_ROWS", "Grids", "Transition", "check_memory", "speeds_on_energy", "transition"]
+__all__ = ["CHUNK_ROWS", "Grids", "Transition", "check_memory", "speeds_on_energy", "steps", "transition"]
 
 #: Rows (state-action pairs) per batch call: bounds the batch's output (~20 float64 columns).
 CHUNK_ROWS = 2_000_000
@@ -101,6 +101,28 @@ def _chunks(n_states: int, per_state: int) -> list[slice]:
     return [slice(i, min(i + size, n_states)) for i in range(0, n_states, size)]
 
 
+def steps(name, params, heights, speeds, angles, rates, energy, ground, options):
+    """One batch call: apexes ``(heights[i], speeds[i])`` x ``angles`` (x ``rates``) by map ``name``
+    with ``params``: ``(failed, status, next_state)`` of shape (n, angles[, rates]) (next_state with a
+    trailing axis: (h', v'), or at a fixed ``energy`` the height on its level; NaN where failed)."""
+    extra = (1,) * (1 + (rates is not None))
+    h = np.asarray(heights, dtype=float).reshape(-1, *extra)
+    v = np.asarray(speeds, dtype=float).reshape(-1, *extra)
+    a = np.asarray(angles, dtype=float).reshape(1, -1, *([1] if rates is not None else []))
+    kwargs = {} if rates is None else {"retraction_rate": np.asarray(rates, dtype=float).reshape(1, 1, -1)}
+    res = apex_return_batch(name, params, h, v, a, ground=ground, progress=False, **kwargs, **options)
+    code = res["status"]
+    h1, v1 = res["apex_height"], res["apex_speed"]
+    bad = (code != int(Status.OK)) | ~(v1 > 0.0)
+    if energy is None:
+        step = np.stack([h1, v1], axis=-1)
+    else:
+        g = params.g_f
+        share = g * h1 / (g * h1 + 0.5 * v1 * v1)
+        step = (share * energy / (params.m * g))[..., None]
+    return bad, code, np.where(bad[..., None], math.nan, step)
+
+
 def transition(
     name: str,
     params: SlipParams,
@@ -132,8 +154,6 @@ def transition(
         h_all, v_all = hh.ravel(), vv.ravel()
     else:
         h_all, v_all = heights, speeds_on_energy(params, grids.energy, heights)
-    # the action axes after the state axis: angle, (k_d: one call each), (rate)
-    a_angle = angles.reshape(-1, *([1] if rates is not None else []))
     calls = (
         [(None, params)]
         if stiffnesses is None
@@ -144,23 +164,9 @@ def transition(
     with Bar(len(calls) * n_states, f"viability: {name}", progress, unit="states") as bar:
         for j, p in calls:
             for rows in chunks:
-                extra = (1,) * (1 + (rates is not None))
-                h = h_all[rows].reshape(-1, *extra)
-                v = v_all[rows].reshape(-1, *extra)
-                kwargs = {} if rates is None else {"retraction_rate": rates.reshape(1, 1, -1)}
-                res = apex_return_batch(
-                    name, p, h, v, a_angle[None, ...], ground=ground, progress=False, **kwargs, **options
+                bad, code, step = steps(
+                    name, p, h_all[rows], v_all[rows], angles, rates, grids.energy, ground, options
                 )
-                code = res["status"]
-                h1, v1 = res["apex_height"], res["apex_speed"]
-                bad = (code != int(Status.OK)) | ~(v1 > 0.0)
-                if free:
-                    step = np.stack([h1, v1], axis=-1)
-                else:
-                    g = params.g_f
-                    share = g * h1 / (g * h1 + 0.5 * v1 * v1)
-                    step = (share * grids.energy / (params.m * g))[..., None]
-                step = np.where(bad[..., None], math.nan, step)
                 where = (rows,) if j is None else (rows, slice(None), j)
                 failed[where] = bad
                 status[where] = code

@@ -110,4 +110,4 @@ def viability_sweep(
         return np.ascontiguousarray(np.transpose(a, perm + list(range(len(order), a.ndim))))
 
     tm = Transition(arrange(failed), arrange(status), arrange(nxt, (2,)), seconds)
-    return from_transition(call, params, grids, tm, outside)
+    return from_transition(call, params, grids, tm, outside, float(ground))
