@@ -15,6 +15,7 @@ Parts (``--part``, repeatable; default all but ``scale``):
   axis), both discretisations (``outside`` fail and edge).
 - ``maps2d``: ``iterative`` and ``geyer-vs`` against the exact map on the stiffness part's (height,
   speed) grid of vibly's runner with k_d free.
+- ``retraction``: vibly's grid with a retraction rate (0 ... -4 rad/s) as a second action.
 - ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``): seconds and
   peak memory (ru_maxrss).
 
@@ -266,6 +267,37 @@ def part_maps2d(n: int) -> dict:
     return out
 
 
+def part_retraction() -> dict:
+    """vibly's grid with a swing-leg retraction rate as a second action (0 ... -4 rad/s): the kernel,
+    the share of angles with some viable rate, against the leg held at the angle."""
+    rates = np.linspace(-4.0, 0.0, 9)
+    held = _demo()
+    heights = S_GRID * ENERGY / (VIBLY.m * VIBLY.g_f)
+    swung = slipmaps.viability(
+        "exact", VIBLY, apex_height=heights, touchdown_angle=ANGLES, energy=ENERGY, retraction_rate=rates
+    )
+    angle_ok = swung.viable.any(axis=2)
+    out = {"rates": rates.tolist(), "seconds": swung.seconds["map"] + swung.seconds["kernel"]}
+    for label, vs, share in (
+        ("held", held, held.measure),
+        ("retraction free", swung, angle_ok.mean(axis=1)),
+    ):
+        c = VIBLY.m * VIBLY.g_f / ENERGY
+        k = vs.summary()["kernel_extent"]["apex_height"]
+        out[label] = {
+            "kernel_states": int(vs.kernel.sum()),
+            "kernel_s": None if k is None else [k[0] * c, k[1] * c],
+            "mean_angle_share_in_kernel": float(share[vs.kernel].mean()),
+            "angle_share_max": float(share.max()),
+        }
+    per_rate = {}
+    for i, r in enumerate(rates):
+        q = swung.viable[:, :, i]
+        per_rate[f"{r:g}"] = int(q.sum())
+    out["viable_pairs_per_rate"] = per_rate
+    return out
+
+
 def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
     heights = np.linspace(0.5, 2.4, n)
     speeds = np.linspace(0.5, 7.0, n)
@@ -293,7 +325,9 @@ def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--part", action="append", choices=("vibly", "maps", "maps2d", "stiffness", "scale"))
+    ap.add_argument(
+        "--part", action="append", choices=("vibly", "maps", "maps2d", "stiffness", "retraction", "scale")
+    )
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--n", type=int, default=30, help="points per axis (stiffness, scale)")
     ap.add_argument("--scale-map", default="exact")
@@ -311,6 +345,8 @@ def main() -> None:
             out["maps"] = part_maps(args.figure)
         elif part == "maps2d":
             out["maps2d"] = part_maps2d(args.n)
+        elif part == "retraction":
+            out["retraction"] = part_retraction()
         elif part == "stiffness":
             out["stiffness"] = part_stiffness(args.n, not args.no_levels)
         else:
