@@ -15,7 +15,7 @@ Parts (``--part``, repeatable; default all but ``scale``):
   axis), both discretisations (``outside`` fail and edge).
 - ``maps2d``: ``iterative`` and ``geyer-vs`` against the exact map on the stiffness part's (height,
   speed) grid of vibly's runner with k_d free.
-- ``retraction``: vibly's grid with a retraction rate (0 ... -4 rad/s) as a second action.
+- ``retraction``: vibly's grid with a retraction rate (-3 ... 0 rad/s) as a second action.
 - ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``): seconds and
   peak memory (ru_maxrss).
 
@@ -268,9 +268,10 @@ def part_maps2d(n: int) -> dict:
 
 
 def part_retraction() -> dict:
-    """vibly's grid with a swing-leg retraction rate as a second action (0 ... -4 rad/s): the kernel,
+    """vibly's grid with a swing-leg retraction rate as a second action (-3 ... 0 rad/s, within the maps'
+    domain |rate| <= sqrt(g_f/q_r_td) = 3.13 rad/s): the kernel,
     the share of angles with some viable rate, against the leg held at the angle."""
-    rates = np.linspace(-4.0, 0.0, 9)
+    rates = np.linspace(-3.0, 0.0, 7)
     held = _demo()
     heights = S_GRID * ENERGY / (VIBLY.m * VIBLY.g_f)
     swung = slipmaps.viability(

@@ -313,6 +313,7 @@ def test_per_state_results_as_frame_and_dict(demo):
         ({"energy": ENERGY, "k_d": [8000.0, 9000.0]}, "changes the energy"),
         ({"energy": 100.0}, "above the energy"),
         ({"energy": ENERGY, "outside": "clip"}, "outside must be one of"),
+        ({"energy": ENERGY, "retraction_rate": [-3.5, 0.0]}, "sqrt"),
     ],
 )
 def test_bad_arguments_are_refused_by_name(kwargs, words):

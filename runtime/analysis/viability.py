@@ -246,6 +246,12 @@ def _grids(params, apex_height, touchdown_angle, apex_speed, energy, k_d, retrac
         actions["k_d"] = _grid("k_d", k_d, positive=True)
     if retraction_rate is not None:
         actions["retraction_rate"] = _grid("retraction_rate", retraction_rate)
+        bound = math.sqrt(params.g_f / params.q_r_td)  # the maps' domain of the rate (flight kernels)
+        if np.any(np.abs(actions["retraction_rate"]) > bound):
+            raise ValueError(
+                f"retraction_rate must lie within +-sqrt(g_f/q_r_td) = {bound:.4g} rad/s (the maps' domain: "
+                "the foot's height concave in time)"
+            )
     return Grids(states, actions, energy)
 
 
