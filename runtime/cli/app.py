@@ -30,7 +30,10 @@ Subcommands (``slipmaps --version`` prints the installed version):
   (runtime/cli/run.py);
 - ``report [--render-only | --quick] [--out DIR]``: every study and the control evaluation measured
   again, then the report's sections 6-8 (docs/sections.md) rebuilt from their records
-  (runtime/cli/report.py).
+  (runtime/cli/report.py);
+- ``viability [--vibly | --energy J --heights MIN MAX N | --speeds ...] [--json] [--out PATH.npz]``:
+  the viable set, the viability kernel and its measure on a grid, with a figure
+  (runtime/cli/viability.py).
 
 A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
 that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
@@ -60,6 +63,7 @@ from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import report as report_cli
 from . import run as run_cli
 from . import sweep as sweep_cli
+from . import viability as viability_cli
 from .args import add_params, image_path, map_options, params_of, stiffness_note
 from .defaults import (
     APEX_FROUDE,
@@ -260,6 +264,7 @@ def build_parser() -> argparse.ArgumentParser:
     sweep_cli.add_parser(sub)
     run_cli.add_parser(sub)
     report_cli.add_parser(sub)
+    viability_cli.add_parser(sub)
     return parser
 
 
@@ -451,6 +456,7 @@ def _run(argv: list[str] | None) -> int:
         "sweep": sweep_cli.run,
         "run": run_cli.run,
         "report": report_cli.run,
+        "viability": viability_cli.run,
     }
     try:
         # numba compiling a kernel on first use (tens of seconds on an empty cache) is a line on a

@@ -13,6 +13,7 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     batch["apex_height"], batch["status"]
     gaits = slipmaps.fixed_points("exact", params, apex_height=1.0, speed=5.0)  # periodic gaits
     gaits[0].touchdown_angle, gaits[0].eigenvalue, gaits[0].stable
+    vs = slipmaps.viability("exact", params, apex_height=heights, touchdown_angle=angles, energy=1900.0)
     plan = slipmaps.deadbeat("iterative", params, 1.0, 5.0, 1.0, 5.2)   # touchdown angle and k_d
     plan.touchdown_angle, plan.k_d, plan.status                          # REACHED
     policy = slipmaps.swing_policy("iterative", params, 1.3, 5.0, 1.3, 5.0, grounds=(-0.3, 0.3),
@@ -56,6 +57,9 @@ _EXPORTS = {
     "JacobianBatch": "slipmaps.runtime.api.jacobian",
     "fixed_points": "slipmaps.runtime.analysis.gait",
     "FixedPoint": "slipmaps.runtime.analysis.gait",
+    "viability": "slipmaps.runtime.analysis.viability",
+    "ViableSet": "slipmaps.runtime.analysis.viability",
+    "viability_sweep": "slipmaps.runtime.sweep.viability",
     "Result": "slipmaps.runtime.api.results",
     "BatchResult": "slipmaps.runtime.api.results",
     "Status": "slipmaps.generated.status",

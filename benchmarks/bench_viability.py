@@ -1,0 +1,362 @@
+"""Benchmark and study: viability (issue 31) with slipmaps' maps, the numbers of docs/viability.md.
+
+Parts (``--part``, repeatable; default all but ``scale``):
+
+- ``vibly``: Heim and Spröwitz's SLIP demo (vibly's demos/computeQ_slip.py: m 80 kg, k 8200 N/m,
+  l0 1 m, E 1877.08 J, s = m g y / E on 180 points in [0.1, 0.995], angles -10 ... 70 deg in 161
+  steps) with the exact map: the time of ``slipmaps.viability`` (best of ``--repeat`` after a warm-up
+  call), the kernel's extent and the measure's peak, with ``outside="edge"`` (vibly's) and
+  ``"fail"``; and against vibly's published arrays (tests/data/vibly_slip_map.npz).
+- ``maps``: every approximate map on the same grid against the exact map: intersection over union of
+  Q_V, the false-viable share (pairs the map calls viable that the exact map does not, over the
+  map's viable pairs), the kernel states and the seconds.
+- ``stiffness``: what a free k_d buys, on (height, speed) grids, vibly's runner and the human
+  runner: the kernel and the measure with k_d = k_c against k_d on [k/2, 2k] (``--n`` points per
+  axis), both discretisations (``outside`` fail and edge).
+- ``maps2d``: ``iterative`` and ``geyer-vs`` against the exact map on the stiffness part's (height,
+  speed) grid of vibly's runner with k_d free.
+- ``retraction``: vibly's grid with a retraction rate (-3 ... 0 rad/s) as a second action.
+- ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``): seconds and
+  peak memory (ru_maxrss).
+
+Usage: ``python benchmarks/bench_viability.py [--part vibly ...] [--json PATH]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import resource
+import time
+from pathlib import Path
+
+import numpy as np
+import slipmaps
+
+ROOT = Path(__file__).resolve().parent.parent
+VIBLY = slipmaps.SlipParams(m=80.0, l0=1.0, k=8200.0, g_s=9.81, g_f=9.81)
+ENERGY = 1877.08
+S_GRID = np.linspace(0.1, 1, 181)[:-1]
+ANGLES = np.radians(np.linspace(-10.0, 70.0, 161))
+
+
+def _demo(name: str = "exact", outside: str = "fail", **options):
+    heights = S_GRID * ENERGY / (VIBLY.m * VIBLY.g_f)
+    return slipmaps.viability(
+        name, VIBLY, apex_height=heights, touchdown_angle=ANGLES, energy=ENERGY, outside=outside, **options
+    )
+
+
+def _shape(vs) -> dict:
+    s = vs.summary()
+    c = VIBLY.m * VIBLY.g_f / ENERGY
+    lo_hi = s["kernel_extent"]["apex_height"]
+    out = {
+        "kernel_states": s["kernel_states"],
+        "viable_pairs": s["viable_pairs"],
+        "failed": s["failed"],
+        "measure_max": s["measure_max"],
+        "measure_peak_s": s["measure_peak"]["apex_height"] * c,
+        "kernel_s": None if lo_hi is None else [lo_hi[0] * c, lo_hi[1] * c],
+        "rounds": s["rounds"],
+    }
+    # where the viable angles lie at the measure's peak and the kernel's ends
+    i = int(np.argmax(vs.measure))
+    ang = np.degrees(ANGLES[vs.viable[i]])
+    out["peak_angles_deg"] = [float(ang.min()), float(ang.max())]
+    return out
+
+
+def part_vibly(repeat: int) -> dict:
+    _demo()  # compile or load
+    out = {}
+    for outside in ("edge", "fail"):
+        times = []
+        for _ in range(repeat):
+            t = time.perf_counter()
+            vs = _demo(outside=outside)
+            times.append(time.perf_counter() - t)
+        out[outside] = {"seconds": min(times), "seconds_map": vs.seconds["map"], **_shape(vs)}
+        if outside == "edge":
+            ref = np.load(ROOT / "tests" / "data" / "vibly_slip_map.npz")
+            out["vibly_equal"] = {
+                "Q_F": bool(np.array_equal(vs.failed, ref["Q_F"])),
+                "Q_V": bool(np.array_equal(vs.viable, ref["Q_V"])),
+                "S_M": bool(np.array_equal(vs.measure, ref["S_M"])),
+            }
+            statuses = {
+                slipmaps.Status(int(c)).name: int((vs.status == c).sum()) for c in np.unique(vs.status)
+            }
+            statuses["OK, next speed not positive"] = int(((vs.status == 0) & vs.failed).sum())
+            out["statuses"] = statuses
+        else:
+            out["fail_vs_edge_pairs"] = int(out["edge"]["viable_pairs"] - out["fail"]["viable_pairs"])
+    out["pairs"] = int(S_GRID.size * ANGLES.size)
+    return out
+
+
+def _compare(vs, ref) -> dict:
+    a, b = vs.viable, ref.viable
+    union = (a | b).sum()
+    return {
+        "iou": float((a & b).sum() / union) if union else 1.0,
+        "false_viable": float((a & ~b).sum() / a.sum()) if a.sum() else 0.0,
+        "false_viable_pairs": int((a & ~b).sum()),
+        "missed_pairs": int((b & ~a).sum()),
+        "kernel_states": int(vs.kernel.sum()),
+        "kernel_differs": int((vs.kernel != ref.kernel).sum()),
+        "failed_differs": int((vs.failed != ref.failed).sum()),
+    }
+
+
+def _maps_figure(ref, sets: dict, path: str) -> None:
+    """A panel per map: the state-action plane, pairs viable for both (green), for the map only
+    (false-viable, red), for the exact map only (missed, blue)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import ListedColormap
+
+    cols = 4
+    rows = -(-len(sets) // cols)
+    fig, axes = plt.subplots(
+        rows, cols, figsize=(3.2 * cols, 2.7 * rows), sharex=True, sharey=True, constrained_layout=True
+    )
+    cmap = ListedColormap(["#f4f4f4", "#2a9d8f", "#d62828", "#1d4ed8"])
+    deg = np.degrees(ANGLES)
+    for ax, (name, vs) in zip(axes.ravel(), sets.items(), strict=False):
+        a, b = vs.viable, ref.viable
+        image = np.select([a & b, a & ~b, b & ~a], [1, 2, 3], 0)
+        ax.pcolormesh(deg, S_GRID, image, cmap=cmap, vmin=0, vmax=3, shading="nearest", rasterized=True)
+        ax.set_title(f"{name}: {int((a & ~b).sum())} false, {int((b & ~a).sum())} missed", fontsize=8)
+    for ax in axes.ravel()[len(sets) :]:
+        ax.axis("off")
+    for ax in axes[-1]:
+        ax.set_xlabel("touchdown angle [deg]")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("s = m g y / E")
+    fig.suptitle(
+        "Q_V of each map against the exact map's (vibly's SLIP grid): green both, red the map "
+        "only (false-viable), blue the exact map only",
+        fontsize=9,
+    )
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def part_maps(figure: str | None = None) -> dict:
+    ref = _demo()
+    out = {"exact": {"kernel_states": int(ref.kernel.sum()), "viable_pairs": int(ref.viable.sum())}}
+    sets = {}
+    for info in slipmaps.maps():
+        if info.name == "exact":
+            continue
+        try:
+            _demo(info.name)  # compile or load
+        except ValueError as exc:
+            out[info.name] = {"error": str(exc)}
+            continue
+        t = time.perf_counter()
+        vs = _demo(info.name)
+        out[info.name] = {"seconds": time.perf_counter() - t, **_compare(vs, ref)}
+        sets[info.name] = vs
+        print(info.name, out[info.name], flush=True)
+    if figure:
+        _maps_figure(ref, sets, figure)
+    return out
+
+
+def _stiffness_case(params, heights, speeds, angles, k_d) -> dict:
+    out = {}
+    grid = {"apex_height": heights, "apex_speed": speeds, "touchdown_angle": angles}
+    for outside in ("fail", "edge"):
+        fixed = slipmaps.viability("exact", params, **grid, outside=outside)
+        free = slipmaps.viability("exact", params, **grid, k_d=k_d, outside=outside)
+        row = {}
+        for label, vs in (("k_d = k_c", fixed), ("k_d free", free)):
+            safe = (~vs.failed).any(axis=tuple(range(2, vs.failed.ndim)))
+            angles_ok = (
+                vs.viable.any(axis=tuple(range(3, vs.viable.ndim))) if vs.viable.ndim > 3 else vs.viable
+            )
+            row[label] = {
+                "kernel_states": int(vs.kernel.sum()),
+                "mean_angle_share_in_kernel": float(angles_ok.mean(axis=2)[vs.kernel].mean())
+                if vs.kernel.any()
+                else 0.0,
+                "states_with_a_safe_step": int(safe.sum()),
+                "mean_measure_in_kernel": float(vs.measure[vs.kernel].mean()) if vs.kernel.any() else 0.0,
+                "measure_max": float(vs.measure.max()),
+                "rounds": vs.rounds,
+                "seconds": vs.seconds["map"] + vs.seconds["kernel"],
+            }
+        both = fixed.kernel & free.kernel
+        row["fixed_kernel_inside_free"] = bool(both.sum() == fixed.kernel.sum())
+        out[outside] = row
+    out["states"] = int(heights.size * speeds.size)
+    return out
+
+
+def per_level(params, heights, speeds, angles, levels: int = 80) -> dict:
+    """k_d = k_c without the (height, speed) grid's erosion: each node (h, v) of a safe step judged on
+    its own energy level's 1-D grid (``levels`` heights from the touchdown limit to 99.5 % of the
+    level's top, with h inserted), the discretisation of vibly's setting."""
+    kernel = np.zeros((heights.size, speeds.size), dtype=bool)
+    measure = np.zeros((heights.size, speeds.size))
+    g = params.g_f
+    for i, h in enumerate(heights):
+        for j, v in enumerate(speeds):
+            energy = params.m * (g * h + 0.5 * v * v)
+            top = energy / (params.m * g)
+            grid = np.unique(np.append(np.linspace(0.3 * params.l0, 0.995 * top, levels), h))
+            vs = slipmaps.viability("exact", params, apex_height=grid, touchdown_angle=angles, energy=energy)
+            at = int(np.searchsorted(grid, h))
+            kernel[i, j], measure[i, j] = vs.kernel[at], vs.measure[at]
+    return {
+        "kernel_states": int(kernel.sum()),
+        "mean_measure_in_kernel": float(measure[kernel].mean()) if kernel.any() else 0.0,
+        "measure_max": float(measure.max()),
+    }
+
+
+def part_stiffness(n: int, levels: bool = True) -> dict:
+    angles = np.radians(np.linspace(-10.0, 70.0, 2 * n + 1))
+    human = slipmaps.HUMAN_RUNNER
+    cases = {
+        "vibly (k 8200 N/m)": (VIBLY, np.linspace(0.5, 2.4, n), np.linspace(0.5, 7.0, n)),
+        "human runner (k 20 kN/m)": (human, np.linspace(0.6, 1.6, n), np.linspace(1.0, 8.0, n)),
+    }
+    out = {}
+    for label, (params, heights, speeds) in cases.items():
+        k = params.k_c
+        out[label] = {
+            "grid": {
+                "heights": [heights[0], heights[-1]],
+                "speeds": [speeds[0], speeds[-1]],
+                "n": n,
+                "angles": angles.size,
+                "k_d": [k / 2, 2 * k, 5],
+            },
+            **_stiffness_case(params, heights, speeds, angles, np.linspace(k / 2, 2 * k, 5)),
+        }
+        if not levels:
+            print(label, out[label], flush=True)
+            continue
+        t = time.perf_counter()
+        out[label]["k_d = k_c per energy level"] = per_level(params, heights, speeds, angles)
+        out[label]["k_d = k_c per energy level"]["seconds"] = time.perf_counter() - t
+        print(label, out[label], flush=True)
+    return out
+
+
+def part_maps2d(n: int) -> dict:
+    """The variable-stiffness maps against the exact one on vibly's (height, speed) grid with k_d free
+    (the stiffness part's grid)."""
+    grid = {
+        "apex_height": np.linspace(0.5, 2.4, n),
+        "apex_speed": np.linspace(0.5, 7.0, n),
+        "touchdown_angle": np.radians(np.linspace(-10.0, 70.0, 2 * n + 1)),
+        "k_d": np.linspace(4100.0, 16400.0, 5),
+    }
+    ref = slipmaps.viability("exact", VIBLY, **grid)
+    out = {"exact": {"kernel_states": int(ref.kernel.sum()), "viable_pairs": int(ref.viable.sum())}}
+    for name in ("iterative", "geyer-vs"):
+        t = time.perf_counter()
+        vs = slipmaps.viability(name, VIBLY, **grid)
+        out[name] = {"seconds": time.perf_counter() - t, **_compare(vs, ref)}
+    return out
+
+
+def part_retraction() -> dict:
+    """vibly's grid with a swing-leg retraction rate as a second action (-3 ... 0 rad/s, within the maps'
+    domain |rate| <= sqrt(g_f/q_r_td) = 3.13 rad/s): the kernel,
+    the share of angles with some viable rate, against the leg held at the angle."""
+    rates = np.linspace(-3.0, 0.0, 7)
+    held = _demo()
+    heights = S_GRID * ENERGY / (VIBLY.m * VIBLY.g_f)
+    swung = slipmaps.viability(
+        "exact", VIBLY, apex_height=heights, touchdown_angle=ANGLES, energy=ENERGY, retraction_rate=rates
+    )
+    angle_ok = swung.viable.any(axis=2)
+    out = {"rates": rates.tolist(), "seconds": swung.seconds["map"] + swung.seconds["kernel"]}
+    for label, vs, share in (
+        ("held", held, held.measure),
+        ("retraction free", swung, angle_ok.mean(axis=1)),
+    ):
+        c = VIBLY.m * VIBLY.g_f / ENERGY
+        k = vs.summary()["kernel_extent"]["apex_height"]
+        out[label] = {
+            "kernel_states": int(vs.kernel.sum()),
+            "kernel_s": None if k is None else [k[0] * c, k[1] * c],
+            "mean_angle_share_in_kernel": float(share[vs.kernel].mean()),
+            "angle_share_max": float(share.max()),
+        }
+    per_rate = {}
+    for i, r in enumerate(rates):
+        q = swung.viable[:, :, i]
+        per_rate[f"{r:g}"] = int(q.sum())
+    out["viable_pairs_per_rate"] = per_rate
+    return out
+
+
+def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
+    heights = np.linspace(0.5, 2.4, n)
+    speeds = np.linspace(0.5, 7.0, n)
+    angles = np.radians(np.linspace(-10.0, 70.0, n))
+    k_d = np.linspace(4100.0, 16400.0, n if n_k_d is None else n_k_d)
+    grid = {"apex_height": heights, "apex_speed": speeds, "touchdown_angle": angles[:2], "k_d": k_d[:2]}
+    slipmaps.viability(name, VIBLY, **grid)  # compile or load
+    t = time.perf_counter()
+    vs = slipmaps.viability(
+        name, VIBLY, apex_height=heights, apex_speed=speeds, touchdown_angle=angles, k_d=k_d, progress=True
+    )
+    total = time.perf_counter() - t
+    return {
+        "map": name,
+        "pairs": int(vs.failed.size),
+        "seconds": total,
+        "seconds_map": vs.seconds["map"],
+        "seconds_kernel": vs.seconds["kernel"],
+        "us_per_pair": 1e6 * vs.seconds["map"] / vs.failed.size,
+        "max_rss_GB": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6,
+        "kernel_states": int(vs.kernel.sum()),
+        "rounds": vs.rounds,
+    }
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument(
+        "--part", action="append", choices=("vibly", "maps", "maps2d", "stiffness", "retraction", "scale")
+    )
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--n", type=int, default=30, help="points per axis (stiffness, scale)")
+    ap.add_argument("--scale-map", default="exact")
+    ap.add_argument("--scale-k-d", type=int, default=None, help="k_d points of the scale grid (default --n)")
+    ap.add_argument("--json", default=None, help="write the results here too")
+    ap.add_argument("--figure", default=None, help="the maps' figure (part maps)")
+    ap.add_argument("--no-levels", action="store_true", help="stiffness: skip the per-level kernels")
+    args = ap.parse_args()
+    parts = args.part or ["vibly", "maps", "stiffness"]
+    out = {"machine": {"cpus": __import__("os").cpu_count(), "load": __import__("os").getloadavg()}}
+    for part in parts:
+        if part == "vibly":
+            out["vibly"] = part_vibly(args.repeat)
+        elif part == "maps":
+            out["maps"] = part_maps(args.figure)
+        elif part == "maps2d":
+            out["maps2d"] = part_maps2d(args.n)
+        elif part == "retraction":
+            out["retraction"] = part_retraction()
+        elif part == "stiffness":
+            out["stiffness"] = part_stiffness(args.n, not args.no_levels)
+        else:
+            out["scale"] = part_scale(args.n, args.scale_map, args.scale_k_d)
+        print(json.dumps({part: out[part]}, indent=1), flush=True)
+    out["machine"]["load_after"] = __import__("os").getloadavg()
+    if args.json:
+        Path(args.json).write_text(json.dumps(out, indent=1) + "\n")
+
+
+if __name__ == "__main__":
+    main()

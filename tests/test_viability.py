@@ -1,0 +1,393 @@
+"""Viability (issue 31): ``slipmaps.viability``, its discretisation and fixed point, and ``slipmaps
+viability``.
+
+- Analytic cases: every action fails (apexes below the touchdown height of every angle) -> an empty
+  kernel; a chain of states that each step lowers toward a failing one -> the iteration empties
+  the kernel one state per round.
+- The kernel is a fixed point of the iteration; with more actions (k_d free) it only grows.
+- Heim and Spröwitz's SLIP demo: the failures, Q_V and the measure of vibly's published results
+  (tests/data/vibly_slip_map.npz, from sheim/vibly's tests/integration/data/slip_map.npz, MIT
+  license: tests/data/VIBLY_LICENSE) reproduced to the bit with ``outside="edge"``.
+- A state-action pair called viable is simulated on the exact map for many steps, choosing each
+  step a viable action of the grid node nearest the state, without a fall.
+- The command line: its outputs (summary, JSON, the arrays, the figure) and its one-line errors.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import slipmaps
+from slipmaps.runtime.analysis.viability_kernel import cell_viable, cells, is_fixed_point, viable_set
+from slipmaps.runtime.cli import main
+
+DATA = Path(__file__).resolve().parent / "data"
+
+#: vibly's SLIP demo (demos/computeQ_slip.py): parameters, energy, grids.
+VIBLY = slipmaps.SlipParams(m=80.0, l0=1.0, k=8200.0, g_s=9.81, g_f=9.81)
+ENERGY = 1877.08
+S_GRID = np.linspace(0.1, 1, 181)[:-1]
+HEIGHTS = S_GRID * ENERGY / (80.0 * 9.81)
+ANGLES = np.linspace(-10 / 180 * np.pi, 70 / 180 * np.pi, 161)
+
+
+@pytest.fixture(scope="module")
+def demo():
+    """vibly's demo grid on the exact map, with vibly's handling of a next state beyond the grid."""
+    return slipmaps.viability(
+        "exact", VIBLY, apex_height=HEIGHTS, touchdown_angle=ANGLES, energy=ENERGY, outside="edge"
+    )
+
+
+def test_every_action_failing_gives_an_empty_kernel():
+    """Apexes lower than the touchdown height l0 cos(angle) of every angle: no touchdown, all fail."""
+    heights = np.linspace(0.1, 0.3, 5)
+    angles = np.linspace(0.0, 0.5, 6)  # l0 cos(0.5) = 0.878 m > 0.3 m
+    vs = slipmaps.viability(
+        "exact", VIBLY, apex_height=heights, touchdown_angle=angles, apex_speed=[3.0, 5.0]
+    )
+    assert vs.failed.all()
+    assert set(np.unique(vs.status)) == {int(slipmaps.Status.APEX_TOO_LOW)}
+    assert not vs.kernel.any() and not vs.viable.any()
+    assert np.all(vs.measure == 0.0)
+    assert np.isnan(vs.next_state).all()
+
+
+def test_a_chain_toward_a_failing_state_empties_the_kernel_one_state_per_round():
+    """States 0..n-1, one action: state i steps exactly onto node i-1, state 0 fails. Every state
+    is in the first estimate but 0; the conservative rule removes one per round."""
+    n = 6
+    grid = np.arange(n, dtype=float)
+    failed = np.zeros((n, 1), dtype=bool)
+    failed[0] = True
+    nxt = (grid - 1.0)[:, None, None]
+    cell = cells(nxt, failed, [grid])
+    k = viable_set(failed, cell, 1)
+    assert not k.kernel.any()
+    assert k.rounds == n  # n - 1 removals, then a round that changes nothing
+    # with a self-loop at the top the state stays viable alone ... but its cell's upper node is
+    # beyond the grid: viable only with outside="edge"
+    nxt[-1] = grid[-1]
+    cell = cells(nxt, failed, [grid])
+    assert not viable_set(failed, cell, 1, "fail").kernel.any()
+    assert viable_set(failed, cell, 1, "edge").kernel.tolist() == [False] * (n - 1) + [True]
+
+
+def test_a_cell_is_viable_only_when_all_its_nodes_are():
+    kernel = np.array([[True, True, False], [True, True, True]])
+    ok = cell_viable(kernel, "fail")
+    assert ok.shape == (3 * 4 + 1,) and not ok[-1]
+    ok = ok[:-1].reshape(3, 4)
+    # cell (1, 1) lies between nodes (0..1, 0..1): all viable; cell (1, 2) touches node (0, 2)
+    assert ok[1, 1] and not ok[1, 2]
+    assert not ok[0].any() and not ok[:, 0].any()  # beyond the grid: not viable
+    edge = cell_viable(kernel, "edge")[:-1].reshape(3, 4)
+    assert edge[0, 1] and edge[1, 0] and not edge[0, 3]
+
+
+def test_vibly_demo_reproduces_vibly_published_sets(demo):
+    """The failures, the viable set Q_V and the measure S_M equal vibly's published arrays exactly
+    (the binning, the conservative rule and the iteration are vibly's)."""
+    ref = np.load(DATA / "vibly_slip_map.npz")
+    assert np.allclose(ref["s_grid"], S_GRID) and np.allclose(ref["a_grid"], ANGLES)
+    assert np.array_equal(demo.failed, ref["Q_F"])
+    assert np.array_equal(demo.viable, ref["Q_V"])
+    assert np.array_equal(demo.measure, ref["S_M"])
+    ok = ~demo.failed
+    assert np.array_equal(np.digitize(demo.next_state[..., 0], HEIGHTS)[ok], ref["Q_map"][ok])
+    assert demo.kernel.sum() == 170 and demo.viable.sum() == 5066
+
+
+def test_the_demo_kernel_is_a_fixed_point(demo):
+    state = demo.states["apex_height"]
+    cell = cells(demo.next_state, demo.failed, [state])
+    assert demo.kernel.any() and not demo.kernel.all()
+    assert is_fixed_point(demo.failed, cell, demo.kernel, "edge")
+    # a state removed from it is no fixed point (it is reached from the kernel's viable pairs)
+    smaller = demo.kernel.copy()
+    smaller[int(np.argmax(demo.measure))] = False
+    assert not is_fixed_point(demo.failed, cell, smaller, "edge")
+
+
+def test_next_states_beyond_the_grid_are_not_viable_by_default():
+    vs = slipmaps.viability("exact", VIBLY, apex_height=HEIGHTS, touchdown_angle=ANGLES, energy=ENERGY)
+    beyond = ~vs.failed & (vs.next_state[..., 0] >= HEIGHTS[-1])
+    assert beyond.any()
+    assert not vs.viable[beyond].any()
+    state = vs.states["apex_height"]
+    assert is_fixed_point(vs.failed, cells(vs.next_state, vs.failed, [state]), vs.kernel)
+
+
+def _step_choice(vs, height: float) -> float:
+    """The middle viable angle of the grid node nearest ``height`` (the most robust choice)."""
+    i = int(np.argmin(np.abs(vs.states["apex_height"] - height)))
+    ok = np.flatnonzero(vs.viable[i])
+    assert ok.size, f"the node nearest {height} m has no viable action"
+    return float(vs.actions["touchdown_angle"][ok[ok.size // 2]])
+
+
+def test_viable_pairs_survive_many_exact_steps(demo):
+    """From ten viable pairs (seeded), 30 steps on the exact map, each choosing a viable action of the
+    nearest node: no step fails and the runner stays in the kernel's extent."""
+    rng = np.random.default_rng(31)
+    pairs = np.argwhere(demo.viable)
+    assert len(pairs) > 1000
+    lo, hi = demo.summary()["kernel_extent"]["apex_height"]
+    for i, j in pairs[rng.choice(len(pairs), 10, replace=False)]:
+        h, v = HEIGHTS[i], math.sqrt(2 * (ENERGY / 80.0 - 9.81 * HEIGHTS[i]))
+        angle = ANGLES[j]
+        for _ in range(30):
+            step = slipmaps.apex_return("exact", VIBLY, h, v, angle)
+            assert step.ok and step.apex_speed > 0, (i, j, step.status)
+            h, v = step.apex_height, step.apex_speed
+            assert lo <= h <= hi
+            angle = _step_choice(demo, h)
+
+
+def test_a_free_k_d_only_grows_the_kernel():
+    """States (height, speed): the actions angle x k_d in {k/2, k, 2k} hold the actions of k_d = k,
+    so their kernel and viable count contain those of the constant stiffness. ``outside="edge"``: on
+    a (height, speed) grid a constant stiffness keeps the energy, and the conservative rule with
+    next states beyond the grid not viable erodes its kernel to nothing (measured: empty on this
+    grid after 31 rounds; docs/viability.md)."""
+    heights = np.linspace(0.5, 2.4, 15)
+    speeds = np.linspace(0.5, 7.0, 15)
+    angles = np.radians(np.linspace(-10, 70, 41))
+    grid = {"apex_height": heights, "apex_speed": speeds, "touchdown_angle": angles, "outside": "edge"}
+    fixed = slipmaps.viability("exact", VIBLY, **grid)
+    free = slipmaps.viability("exact", VIBLY, **grid, k_d=[4100.0, 8200.0, 16400.0])
+    assert free.viable.shape == (15, 15, 41, 3) and free.next_state.shape == (15, 15, 41, 3, 2)
+    assert np.array_equal(free.failed[..., 1], fixed.failed)
+    assert 0 < fixed.kernel.sum() < fixed.kernel.size
+    assert np.all(free.kernel >= fixed.kernel)
+    assert np.all(free.viable.sum(axis=(2, 3)) >= fixed.viable.sum(axis=2))
+    assert free.viable.sum() > fixed.viable.sum()
+
+
+def test_a_constant_stiffness_kernel_erodes_on_a_height_speed_grid():
+    """The same grid with next states beyond it not viable: empty (the energy levels that leave the
+    grid take their neighbours with them, cell by cell), while k_d free keeps a kernel."""
+    heights = np.linspace(0.5, 2.4, 15)
+    speeds = np.linspace(0.5, 7.0, 15)
+    angles = np.radians(np.linspace(-10, 70, 41))
+    grid = {"apex_height": heights, "apex_speed": speeds, "touchdown_angle": angles}
+    fixed = slipmaps.viability("exact", VIBLY, **grid)
+    free = slipmaps.viability("exact", VIBLY, **grid, k_d=[4100.0, 8200.0, 16400.0])
+    assert (~fixed.failed).any() and not fixed.kernel.any() and fixed.rounds > 10
+    assert free.kernel.sum() > free.kernel.size // 2
+
+
+def test_a_retraction_rate_axis_at_rate_zero_is_the_held_leg():
+    """Actions angle x retraction rate: the rate 0 column is the study without the axis (the same
+    steps, bit for bit), and a retracting leg changes some steps."""
+    heights = HEIGHTS[::12]
+    angles = ANGLES[::10]
+    held = slipmaps.viability("exact", VIBLY, apex_height=heights, touchdown_angle=angles, energy=ENERGY)
+    swung = slipmaps.viability(
+        "exact",
+        VIBLY,
+        apex_height=heights,
+        touchdown_angle=angles,
+        energy=ENERGY,
+        retraction_rate=[-1.0, 0.0],
+    )
+    assert swung.action_names == ("touchdown_angle", "retraction_rate")
+    assert swung.failed.shape == (heights.size, angles.size, 2)
+    assert np.array_equal(swung.failed[..., 1], held.failed)
+    assert np.array_equal(swung.next_state[..., 1, :], held.next_state, equal_nan=True)
+    assert not np.array_equal(swung.failed[..., 0], held.failed)
+
+
+#: A small (height, speed) x (angle, k_d, rate) grid of vibly's runner for the sweep path.
+SWEEP_GRID = {
+    "apex_height": np.linspace(0.5, 2.4, 12),
+    "apex_speed": np.linspace(0.5, 7.0, 11),
+    "touchdown_angle": np.radians(np.linspace(-10, 70, 21)),
+    "k_d": [4100.0, 8200.0, 16400.0],
+    "retraction_rate": [-1.0, 0.0],
+}
+
+
+def _same_sets(a, b) -> None:
+    for name in ("failed", "status", "viable", "kernel", "measure"):
+        assert np.array_equal(getattr(a, name), getattr(b, name)), name
+    assert np.array_equal(a.next_state, b.next_state, equal_nan=True)
+
+
+def test_the_sweep_path_gives_the_same_sets_and_resumes(tmp_path):
+    """``viability_sweep`` (a resumable sweep in chunks of 1,000 rows, read back) equals
+    ``viability`` bit for bit, with the sweep's k_d-slowest row order put back; a second call into
+    the same directory computes nothing and gives the same sets."""
+    direct = slipmaps.viability("exact", VIBLY, **SWEEP_GRID)
+    assert 0 < direct.kernel.sum() < direct.kernel.size
+    swept = slipmaps.viability_sweep("exact", VIBLY, **SWEEP_GRID, out=tmp_path / "s", chunk_rows=1000)
+    _same_sets(direct, swept)
+    chunks = sorted((tmp_path / "s").rglob("*.parquet"))
+    assert len(chunks) >= 16  # 16,632 rows in chunks of 1,000
+    stamps = [c.stat().st_mtime_ns for c in chunks]
+    again = slipmaps.viability_sweep("exact", VIBLY, **SWEEP_GRID, out=tmp_path / "s", chunk_rows=1000)
+    _same_sets(direct, again)
+    assert [c.stat().st_mtime_ns for c in chunks] == stamps
+
+
+def test_the_sweep_path_on_a_local_dask_cluster(tmp_path):
+    pytest.importorskip("distributed")
+    grid = {k: v for k, v in SWEEP_GRID.items() if k != "retraction_rate"}
+    direct = slipmaps.viability("exact", VIBLY, **grid)
+    swept = slipmaps.viability_sweep(
+        "exact", VIBLY, **grid, out=tmp_path / "d", chunk_rows=2000, scheduler="local:2"
+    )
+    _same_sets(direct, swept)
+
+
+def test_the_sweep_path_refuses_a_fixed_energy(tmp_path):
+    with pytest.raises(ValueError, match="axes are independent"):
+        slipmaps.viability_sweep(
+            "exact",
+            VIBLY,
+            apex_height=[1.0],
+            apex_speed=[3.0],
+            touchdown_angle=[0.2],
+            out=tmp_path,
+            energy=ENERGY,
+        )
+    assert list(tmp_path.iterdir()) == []  # refused before any work
+
+
+def test_plots_of_a_height_speed_set_and_of_extra_action_axes(tmp_path):
+    """The (height, speed) figure and the fixed-energy figure with a retraction axis (projected) are
+    written as images."""
+    grid = {k: v for k, v in SWEEP_GRID.items() if k != "retraction_rate"}
+    free = slipmaps.viability("exact", VIBLY, **grid)
+    swung = slipmaps.viability(
+        "exact",
+        VIBLY,
+        apex_height=HEIGHTS[::6],
+        touchdown_angle=ANGLES[::4],
+        energy=ENERGY,
+        retraction_rate=[-1.0, 0.0],
+    )
+    assert free.kernel.any() and swung.kernel.any()
+    for vs, name in ((free, "free.png"), (swung, "swung.svg")):
+        path = vs.plot(tmp_path / name)
+        assert path.stat().st_size > 10_000
+    assert (tmp_path / "free.png").read_bytes()[:4] == b"\x89PNG"
+    assert b"<svg" in (tmp_path / "swung.svg").read_bytes()[:1000]
+
+
+def test_the_bisected_boundary_lies_between_its_nodes_above_the_touchdown_limit():
+    """vibly's grid (beyond it not viable): one edge, between s = 0.145 and 0.15; 30 halvings leave a
+    bracket 2^-30 of the grid step wide, whose ends the predicate tells apart, above the touchdown
+    limit l0 cos 70 deg (below it no angle of the grid touches down: no step at all)."""
+    from slipmaps.runtime.analysis.viability_boundary import viable_somewhere
+
+    vs = slipmaps.viability("exact", VIBLY, apex_height=HEIGHTS, touchdown_angle=ANGLES, energy=ENERGY)
+    b = vs.boundary(30)
+    assert b.axis.tolist() == [0] and b.inside.tolist() == [[10]] and b.outside.tolist() == [[9]]
+    step = HEIGHTS[1] - HEIGHTS[0]
+    assert HEIGHTS[9] < b.low[0] < b.high[0] < HEIGHTS[10]
+    assert b.high[0] - b.low[0] <= step * 2.0**-30 * 1.01
+    assert b.low[0] > VIBLY.l0 * math.cos(math.radians(70.0))
+    ends = viable_somewhere(vs, np.array([[b.low[0]], [b.high[0]]]))
+    assert ends.tolist() == [False, True]
+
+
+def test_per_state_results_as_frame_and_dict(demo):
+    frame = demo.to_pandas()
+    assert len(frame) == 180 and frame["kernel"].sum() == 170
+    assert np.allclose(frame["apex_speed"] ** 2 / 2 + 9.81 * frame["apex_height"], ENERGY / 80.0)
+    data = json.loads(json.dumps(demo.as_dict()))
+    assert data["summary"]["kernel_states"] == 170 and len(data["per_state"]) == 180
+    assert np.allclose(demo.normalized_height, S_GRID)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "words"),
+    [
+        ({"energy": ENERGY, "apex_speed": [5.0]}, "either apex_speed"),
+        ({}, "either apex_speed"),
+        ({"energy": ENERGY, "k_d": [8000.0, 9000.0]}, "changes the energy"),
+        ({"energy": 100.0}, "above the energy"),
+        ({"energy": ENERGY, "outside": "clip"}, "outside must be one of"),
+        ({"energy": ENERGY, "retraction_rate": [-3.5, 0.0]}, "sqrt"),
+    ],
+)
+def test_bad_arguments_are_refused_by_name(kwargs, words):
+    with pytest.raises(ValueError, match=words):
+        slipmaps.viability("exact", VIBLY, apex_height=[0.5, 1.0], touchdown_angle=[0.1, 0.2], **kwargs)
+
+
+def test_a_k_d_grid_needs_a_variable_stiffness_map():
+    with pytest.raises(ValueError, match="variable-stiffness map"):
+        slipmaps.viability(
+            "geyer", VIBLY, apex_height=[1.0], apex_speed=[5.0], touchdown_angle=[0.2], k_d=[9e3]
+        )
+
+
+def test_cli_vibly_writes_its_figure_arrays_and_summary(tmp_path, capsys):
+    fig, out = tmp_path / "v.png", tmp_path / "v.npz"
+    code = main(["viability", "--vibly", "--outside", "edge", "--figure", str(fig), "--out", str(out)])
+    text = capsys.readouterr().out
+    assert code == 0
+    assert "kernel: 170 of 180 states" in text and "s = m g y / E: kernel 0.15 ... 0.995" in text
+    assert fig.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    arrays = np.load(out)
+    ref = np.load(DATA / "vibly_slip_map.npz")
+    assert np.array_equal(arrays["viable"], ref["Q_V"]) and arrays["next_state"].shape == (180, 161, 1)
+
+
+def test_cli_json_has_a_row_per_state(tmp_path, capsys):
+    argv = ["viability", "--m", "80", "--k", "8200", "--energy", "1877.08", "--s", "0.1", "0.995", "30"]
+    argv += ["--angles-deg", "-10", "70", "21", "--json", "--no-figure"]
+    assert main(argv) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["per_state"]) == 30 and data["actions"]["touchdown_angle"]["n"] == 21
+    assert 0 < data["summary"]["kernel_states"] < 30 and data["written"] == []
+
+
+def test_cli_sweep_out_writes_the_sweep_and_the_same_arrays(tmp_path, capsys):
+    grid = ["--m", "80", "--k", "8200", "--heights", "0.5", "2.4", "8", "--speeds", "0.5", "7", "7"]
+    grid += ["--angles-deg", "-10", "70", "11", "--k-d-grid", "4100", "16400", "3", "--no-figure"]
+    assert main(["viability", *grid, "--out", str(tmp_path / "a.npz")]) == 0
+    assert (
+        main(["viability", *grid, "--out", str(tmp_path / "b.npz"), "--sweep-out", str(tmp_path / "s")]) == 0
+    )
+    a, b = np.load(tmp_path / "a.npz"), np.load(tmp_path / "b.npz")
+    assert a["viable"].shape == (8, 7, 11, 3) and a["kernel"].any()
+    assert all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.files)
+    assert (tmp_path / "s" / "manifest.json").is_file()
+    capsys.readouterr()
+
+
+@pytest.mark.parametrize(
+    ("argv", "words"),
+    [
+        (["--vibly", "--energy", "100"], "--vibly sets the parameters and the grids"),
+        (["--vibly", "--k", "9000"], "give no --k with it"),
+        (["--energy", "100", "--speeds", "1", "2", "3"], "not both"),
+        (["--s", "0.1", "0.9", "10", "--speeds", "1", "2", "3"], "--s needs --energy"),
+        (["--angles-deg", "0", "60", "2.5"], "N a whole number"),
+        (["--out", "x.csv"], "--out"),
+        (["--map", "nope"], "nope"),
+        (["--energy", "1877", "--k-d-grid", "8000", "9000", "2"], "changes the energy"),
+        (["--scheduler", "local:2"], "give --sweep-out too"),
+        (["--vibly", "--sweep-out", "sw"], "--sweep-out needs a (height, speed) grid"),
+    ],
+)
+def test_cli_user_errors_are_one_line_and_exit_2(tmp_path, capsys, monkeypatch, argv, words):
+    monkeypatch.chdir(tmp_path)
+    assert main(["viability", "--no-figure", *argv]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("slipmaps viability: error:") and words in err and "\n" not in err
+
+
+def test_cli_refuses_an_unwritable_figure_before_the_work(tmp_path, capsys):
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    assert main(["viability", "--vibly", "--figure", str(blocker / "v.png")]) == 2
+    captured = capsys.readouterr()
+    assert "--figure" in captured.err and captured.out == ""
