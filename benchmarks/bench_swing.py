@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import slipmaps
-from slipmaps.runtime.control.deadbeat import _controller
+from slipmaps.runtime.control.deadbeat import controller
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import machine  # noqa: E402
@@ -56,7 +56,7 @@ def measure(repeat: int) -> dict:
         def policy(name=name, controls=controls, target_h=target_h):
             slipmaps.swing_policy(name, P, H, V, target_h, V, grounds=(-D, D), controls=controls, n=N)
 
-        ctl = _controller(name, P, controls, None, {"budget": False})
+        ctl = controller(name, P, controls, None, {"budget": False})
 
         def batch(ctl=ctl, target_h=target_h):
             ctl.plan_batch(H, V, target_h, V, ground=grounds)

@@ -87,6 +87,7 @@ __all__ = [
     "deadbeat",
     "deadbeat_batch",
     "default_angle",
+    "controller",
 ]
 
 
@@ -798,7 +799,10 @@ def _split(options: dict) -> tuple[tuple, tuple]:
     return settings, tuple(sorted(options.items()))
 
 
-def _controller(name, params, controls, bounds, options) -> Deadbeat:
+def controller(name, params, controls=None, bounds=None, options=None) -> Deadbeat:
+    """The prepared :class:`Deadbeat` of these settings (``options``: the map's and the solver's),
+    cached across calls when they are hashable."""
+    options = {} if options is None else options
     settings, rest = _split(dict(options))
     try:
         key_bounds = tuple(sorted((k, tuple(v)) for k, v in dict(bounds or {}).items()))
@@ -836,7 +840,7 @@ def deadbeat(
     ``k_c``, ``k_d``, ``k`` are starting (or, not being controls, fixed) values; ``map_options``
     the map's options and the solver's ``tol``, ``jacobian`` ("broyden" or "newton"), ``scan``,
     ``max_evaluations``."""
-    ctl = _controller(name, params, controls, bounds, map_options)
+    ctl = controller(name, params, controls, bounds, map_options)
     return ctl.plan(
         apex_height,
         apex_speed,
@@ -868,7 +872,7 @@ def deadbeat_batch(
 ) -> DeadbeatBatch:
     """:func:`deadbeat` over arrays (the apex, the targets, the ground and the starting angles
     broadcast), in parallel; a plan status per row."""
-    ctl = _controller(name, params, controls, bounds, map_options)
+    ctl = controller(name, params, controls, bounds, map_options)
     return ctl.plan_batch(
         apex_height,
         apex_speed,

@@ -11,7 +11,6 @@ re-measures the blind-running part alone into the committed record.
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 
 import numpy as np
@@ -19,8 +18,12 @@ import numpy as np
 from ..api.files import rounded
 from ..api.index import get
 from ..api.paths import save_figure, writing
-from .evaluation import D_MIN as EVAL_D_MIN
 from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
+from .formats import f as _f
+from .formats import largest as _largest
+from .formats import mm as _mm
+from .formats import pct as _pct
+from .formats import share as _share
 from .report_blind import blind_figure, blind_section
 
 __all__ = ["render", "rounded", "summary", "write", "TARGETS"]
@@ -33,35 +36,6 @@ TARGETS = {
     "cost_iterative": "a step planned in under 50 us with iterative",
     "cost_geyer": "a step planned in under 5 us with geyer",
 }
-
-
-def _f(x, digits: int = 3) -> str:
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "n/a"
-    if x == 0:
-        return "0"
-    if 1e-3 <= abs(x) < 1e4:
-        return f"{x:.{max(digits - 1 - math.floor(math.log10(abs(x))), 0)}f}"
-    return f"{x:.{digits - 1}e}"
-
-
-def _mm(x) -> str:
-    return "n/a" if x is None else _f(1000.0 * x)
-
-
-def _pct(x) -> str:
-    return "n/a" if x is None else _f(100.0 * x)
-
-
-def _share(x) -> str:
-    return "n/a" if x is None else f"{100.0 * x:.1f} %"
-
-
-def _largest(d) -> str:
-    """The largest d without a fall; 0 means a fall even at the smallest d searched."""
-    if d is None:
-        return "n/a"
-    return f"< {_f(EVAL_D_MIN)}" if d == 0 else _f(d)
 
 
 def _cell(c: dict, key: str, fmt) -> str:

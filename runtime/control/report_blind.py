@@ -9,7 +9,9 @@ import numpy as np
 
 from ..api.paths import save_figure
 from .evaluation import BLIND_MASS, BLIND_NOISE
-from .evaluation import D_MIN as EVAL_D_MIN
+from .formats import f as _f
+from .formats import largest as _largest
+from .formats import share as _share
 
 __all__ = ["BLIND_TARGETS", "blind_figure", "blind_section", "blind_verdicts"]
 
@@ -24,27 +26,11 @@ BLIND_TARGETS = {
 _STIFF, _ANGLE = "time-based, angle and k_d", "time-based, angle"
 
 
-def _f(x, digits: int = 3) -> str:
-    from .report import _f as f
-
-    return f(x, digits)
-
-
-def _share(x) -> str:
-    return "n/a" if x is None else f"{100.0 * x:.1f} %"
-
-
 def _at(b: dict, label: str, d: float):
     row = b["variants"].get(label)
     if row is None or d not in b["d"]:
         return None
     return row["per_d"][b["d"].index(d)]
-
-
-def _largest(d) -> str:
-    if d is None:
-        return "n/a"
-    return f"< {_f(EVAL_D_MIN)}" if d == 0 else _f(d)
 
 
 def _max(values) -> float | None:

@@ -34,7 +34,7 @@ import numpy as np
 from ..api.params import SlipParams
 from ..api.validate import real
 from . import compiled, swing_tables
-from .deadbeat import PLAN_STATUS, Deadbeat, _controller
+from .deadbeat import PLAN_STATUS, Deadbeat, controller
 
 __all__ = ["SwingPolicy", "PolicyTables", "swing_policy", "policy_tables", "DEFAULT_KNOTS"]
 
@@ -386,7 +386,7 @@ def swing_policy(
     takes) as functions of the time since the apex, from ``n`` deadbeat solves of map ``model`` over
     the grounds ``grounds = (low, high)`` [m] relative to the ground under the apex; ``bounds`` and
     ``map_options`` as ``slipmaps.deadbeat`` takes them."""
-    ctl = _controller(model, params, controls, bounds, {"budget": False, **map_options})
+    ctl = controller(model, params, controls, bounds, {"budget": False, **map_options})
     h = real("apex_height", apex_height)
     v = real("apex_speed", apex_speed)
     H = None if target_height is None else real("target_height", target_height)
