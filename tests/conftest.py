@@ -8,10 +8,11 @@ set) it runs derandomized, so a red run is reproducible as it is.
 
 numba: on an empty cache most of a first run is numba compiling the kernels, which every xdist
 worker did again for itself. When the run is the whole suite (no test paths given, or the tests
-directory), the controller (or the only process, without xdist) first compiles every kernel module
-that is missing from the cache, in as many processes as the run has workers (``tests/warmup.py``);
-the workers then load them. With a warm cache that is a check of the cache's indexes (about a
-second) and nothing else. ``SLIPMAPS_WARMUP=0`` turns it off, ``=1`` forces it for any paths.
+directory), the controller (or the only process, without xdist) first compiles every kernel the
+suite calls that is missing from the cache, in as many processes as the run has workers
+(``tests/warmup.py``); the workers then load them. With a warm cache that is a check of the
+cache's indexes (about a second) and nothing else. ``SLIPMAPS_WARMUP=0`` turns it off, ``=1``
+forces it for any paths.
 """
 
 from __future__ import annotations

@@ -77,9 +77,15 @@ class Kernel:
     row: dict | None  # the map's index row; None for the flight kernels
     scalar: Callable
     batch: Callable | None
-    args: tuple[str, ...]
     outputs: tuple[str, ...]
     rows: tuple[str, ...] = ()
+    signature: tuple[str, ...] = ()  # a flight kernel's arguments: its Python signature's
+
+    @property
+    def args(self) -> tuple[str, ...]:
+        """The arguments' names: a map kernel's are its declaration's (tests/kernels.py, from the
+        SymPy derivations: built once per process when a test first asks, not at collection)."""
+        return self.signature or kernels.declaration(self.module, self.name).arg_names
 
     @property
     def options(self) -> tuple[dict, ...]:
@@ -107,8 +113,7 @@ def _map_kernels(row: dict) -> list[Kernel]:
         assert tuple(spec["out"]) == outputs, (row["name"], role)
         module = importlib.import_module(f"slipmaps.generated.{spec['module']}")
         scalar, batch = getattr(module, spec["name"]), getattr(module, f"{spec['name']}_rows")
-        args = kernels.declaration(spec["module"], spec["name"]).arg_names
-        out.append(Kernel(spec["name"], role, row, scalar, batch, args, outputs, tuple(spec["x"])))
+        out.append(Kernel(spec["name"], role, row, scalar, batch, outputs, tuple(spec["x"])))
     return out
 
 
@@ -124,8 +129,8 @@ FLIGHT_KERNELS = [
         None,
         g_flight.apex_to_touchdown,
         None,
-        _signature(g_flight.apex_to_touchdown),
         ("touchdown_q_r", "touchdown_q_rd", "touchdown_q_th", "touchdown_q_thd", "t_flight", "foot_x"),
+        signature=_signature(g_flight.apex_to_touchdown),
     ),
     Kernel(
         "liftoff_to_apex",
@@ -133,8 +138,8 @@ FLIGHT_KERNELS = [
         None,
         g_flight.liftoff_to_apex,
         None,
-        _signature(g_flight.liftoff_to_apex),
         ("apex_b_y", "apex_b_xd", "t_flight", "dx_flight", "apex_b_x"),
+        signature=_signature(g_flight.liftoff_to_apex),
     ),
 ]
 KERNELS = MAP_KERNELS + FLIGHT_KERNELS

@@ -7,6 +7,7 @@ import os
 from types import SimpleNamespace
 
 import conftest
+import numba
 import numpy as np
 import pytest
 import slipmaps
@@ -53,6 +54,47 @@ def test_every_role_kernel_at_its_defaults_is_warmed():
     assert all(("model", s.name) in names for s in index.model_kernels().values())
 
 
+def test_the_kernel_jobs_are_the_kernels_and_types_the_tests_call():
+    """Beyond the defaults: every other choice of a specialized option (the API picks its kernels
+    by name), the exact simulator's external kernels at the types tests pass (float64 scalars, its
+    parameter record, an output array), the Jacobians' batch forms."""
+    from slipmaps.generated import exact_stance as ec
+
+    jobs = warmup.jobs()
+    for name in ("iterative", "iterative-report"):
+        m = index.get(name)
+        for choice in m.option("zeroth").choices:
+            kernels = m.kernels_for(m.resolve({"zeroth": choice}))
+            for role in warmup.CHOICE_ROLES:
+                spec = kernels[role]
+                assert f"{spec.module}:{spec.name}" in jobs or spec == m.kernels[role], (name, choice, role)
+    for name in warmup.JACOBIAN_BATCHES:
+        spec = index.get(name).kernels["apex_return_jacobian"]
+        assert [f for f, *_ in jobs[f"{spec.module}:{spec.name}_rows"]] == [spec.functions()[1]]
+    record = ec.Stance(P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, 1e-11, 1e-12, 1.0)
+    td = (0.99, -1.5, 0.35, -4.5)
+    called = {  # as test_exact_compiled.py and test_exact_rtol.py call them
+        "stance_into": (*td, record, np.empty(ec.N_STANCE)),
+        "stance_evaluations": (*td, record),
+        "stance_jacobian": (*td, P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, 1e-11, 1e-12, np.empty(70)),
+    }
+    for name, args in called.items():
+        [(function, types, _)] = jobs[f"exact_stance:{name}"]
+        assert function is getattr(ec, name) and types == tuple(map(numba.typeof, args)), name
+
+
+def test_the_kernels_the_solver_binds_are_warmed_under_its_key():
+    """The deadbeat solver compiles a kernel it binds at its full signature (compiled.MODEL, int64
+    return type included), which numba's cache keys apart from a call's argument types."""
+    from slipmaps.runtime.control import compiled
+
+    bound = {f.py_func.__name__: types for work in warmup.jobs().values() for f, types, b in work if b}
+    geyer, half = index.get("geyer").kernels, index.get_half("exact-decompression").kernels
+    assert {geyer["apex_return"].name, geyer["apex_return_jacobian"].name, half["apex"].name} <= set(bound)
+    for types in bound.values():
+        assert warmup.solver_signature(types) == compiled.MODEL.signature
+
+
 def _config(args, numprocesses=None, collectonly=False):
     option = SimpleNamespace(numprocesses=numprocesses, collectonly=collectonly)
     return SimpleNamespace(option=option, args=args)
@@ -84,7 +126,7 @@ def test_the_warm_up_runs_for_the_whole_suite_in_the_controller(
 
 
 def test_a_warm_cache_starts_nothing(monkeypatch):
-    monkeypatch.setattr(warmup, "cold_modules", lambda: [])
+    monkeypatch.setattr(warmup, "cold_jobs", lambda: [])
     monkeypatch.setattr(warmup, "_drive", lambda *a: pytest.fail("a warm-up process started"))
     said = []
     assert warmup.warm(2, say=said.append) == 0.0
