@@ -242,8 +242,8 @@ def blind_section(rec: dict) -> list[str]:
             )
             + ". The solves are one batch on one thread, each a generated Jacobian and 4-6 map evaluations "
             "(`iterative`: 6.3 and 2.2 us per call, measured in a numba loop): 64 of them are over 1 ms. "
-            "The interpolation is third order in the knot spacing, so 16 grounds cost a quarter and keep "
-            "the next apex within the errors listed.",
+            "The interpolation is third order in the knot spacing, so fewer grounds cost less at a known "
+            "price: the errors listed.",
         ]
     lines += ["", "![blind running](control_blind.png)", ""]
     return lines
