@@ -128,6 +128,7 @@ def test_the_plan_runs_almost_everything():
     assert len(skipped) <= len(SKIPPED) <= 10 and set(skipped) == {_displayed(k) for k in SKIPPED}
     assert any(a[:3] == ["compare", "--map", "gravity-type2"] for a in run), run  # the options example
     assert ["run", "--evaluate"] not in run  # also where the prose names it: it rewrites the checkout
+    assert not any(a[:2] == ["run", "--evaluate"] for a in run), run  # --blind, --quick alike
     assert named
     for argv in named:
         assert not argv or argv[0] in SUBCOMMANDS, argv
