@@ -220,6 +220,14 @@ def build_parser() -> argparse.ArgumentParser:
         "checkout (pip install -e '.[derive]'); writes only files whose content changes.",
     )
     gen.add_argument("--check", action="store_true", help="exit 1 if generated files differ from the sources")
+    gen.add_argument(
+        "--target",
+        choices=("numba", "c"),
+        default="numba",
+        help="numba (default): generated/ and the docs; c: the analytic maps and the deadbeat solver as a "
+        "C99 library (slipmaps.h, slipmaps.c, ...) in DIR (docs/c_export.md)",
+    )
+    gen.add_argument("dir", nargs="?", type=Path, help="the output directory of --target c")
 
     eq = sub.add_parser(
         "equations",
@@ -378,6 +386,17 @@ def _derive_module(name: str):
 
 
 def _cmd_generate(args: argparse.Namespace) -> int:
+    if args.target == "c":
+        if args.dir is None or args.check:
+            raise ValueError(
+                "--target c writes a C library into a directory: slipmaps generate --target c DIR"
+            )
+        writable_dir("DIR", args.dir)
+        for path in _derive_module("ctarget").write(args.dir):
+            print(f"wrote {path}")
+        return 0
+    if args.dir is not None:
+        raise ValueError(f"{args.dir}: an output directory is for --target c (generated/ has its place)")
     return _derive_module("generate").main(check_only=args.check)
 
 
