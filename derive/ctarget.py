@@ -421,6 +421,12 @@ def _shape(values) -> str:
     return "matrix" if isinstance(first[0], list) else "vector"
 
 
+def _n_values(kernel: Kernel) -> int:
+    """The values among a Jacobian role kernel's outputs (the derivatives, named ``d_...``, follow)."""
+    names = kernel.output_names
+    return next((i for i, n in enumerate(names) if n.startswith("d_") and "__" in n), len(names))
+
+
 def build(modules) -> dict[str, str]:
     """The C library's files {file name: content} for the kernel modules ``modules`` (callees
     first, :func:`.generate.modules`)."""
@@ -465,6 +471,8 @@ def build(modules) -> dict[str, str]:
                 "p": list(p),
                 "params": records[p],
                 "out": list(k.output_names),
+                # the values (a Jacobian's derivatives follow them: d_<output>_d_<input>)
+                "n_values": _n_values(k),
                 "module": k.module,
             }
         )

@@ -149,3 +149,28 @@ def test_c_model_kernels_match_numba(clib):
         out_c, status_c = clib.rows(spec.name, X, P, spec.width)
         np.testing.assert_array_equal(status_c, STATUS, err_msg=name)
         assert close(out_c, OUT).all(), name
+
+
+def test_c_struct_form_matches_vector_form(clib):
+    """The struct form ``slipmaps_<kernel>(x, p, out)`` reads and writes the layouts' names."""
+    import ctypes
+
+    call = Call.of("iterative", slipmaps.HUMAN_RUNNER, {})
+    for role in ("apex_return", "apex_return_jacobian"):
+        spec = call.kernels[role]
+        apex = {"b_y_apex": 1.0, "b_xd_apex": 5.0, "q_th_td": 0.35, "ground": 0.05, "retraction_rate": -1.0}
+        x = np.array([apex[n] for n in spec.x])
+        p = call.record(spec)
+        vec, status = clib.rows(spec.name, x[None, :], p[None, :], spec.width)
+        assert status[0] == 0
+        names = list(spec.outputs) + [f"d_{o}__{w}" for o in spec.outputs for w in spec.wrt]
+
+        def struct(fields, values=None):
+            cls = type("S", (ctypes.Structure,), {"_fields_": [(f, ctypes.c_double) for f in fields]})
+            return cls(*values) if values is not None else cls()
+
+        xs, ps, out = struct(spec.x, x), struct(spec.p, p), struct(names)
+        f = getattr(clib.lib, f"slipmaps_{spec.name}")
+        assert f(ctypes.byref(xs), ctypes.byref(ps), ctypes.byref(out)) == 0
+        got = np.array([getattr(out, n) for n in names])
+        np.testing.assert_array_equal(got, vec[0])
