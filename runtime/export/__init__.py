@@ -1,0 +1,1 @@
+"""Exports of the compiled runtime to other languages (the C deadbeat solver's ctypes bindings)."""
