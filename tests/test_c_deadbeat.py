@@ -28,7 +28,7 @@ from slipmaps.derive.status import STATUS_CODES
 from slipmaps.generated.status import Status
 from slipmaps.runtime.control import compiled
 from slipmaps.runtime.control.bottom import BottomDeadbeat
-from slipmaps.runtime.control.deadbeat import Deadbeat, default_angle
+from slipmaps.runtime.control.deadbeat import CONTROLS, Deadbeat, default_angle
 from slipmaps.runtime.export import deadbeat_c
 
 CC = shutil.which("cc") or shutil.which("gcc")
@@ -100,6 +100,20 @@ double harness_time(slipmaps_role_fn apex, slipmaps_role_fn jac, const double *X
         slipmaps_deadbeat_solve_rows(apex, jac, X, n, nx, P, p_rows, np, T, s, &w, OUT);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     return ((double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec)) / ((double)reps * n);
+}
+
+/* Seconds per call of a map kernel. */
+double harness_time_map(slipmaps_role_fn f, const double *x, const double *p, double *out, int reps)
+{
+    struct timespec t0, t1;
+    int k, code = 0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (k = 0; k < reps; k++)
+        code += f(x, p, out);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    if (code != 0)
+        return -1.0;
+    return ((double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec)) / reps;
 }
 """
 
@@ -329,12 +343,68 @@ def test_c_solver_refuses_what_its_buffers_cannot_hold(lib):
     assert refused == 2
 
 
-@pytest.mark.skipif(not os.environ.get("SLIPMAPS_C_TIMING"), reason="SLIPMAPS_C_TIMING=1 times the C solve")
-def test_c_timing(lib):
-    """Microseconds per C solve (a C loop over warm-started rows), beside the numba solve of the
-    same rows (its compiled rows entry point, one thread)."""
+def _reachable(ctl, controls, tgt, n, seed):
+    """n rows whose targets the map reaches: its next apex at random controls (the angle within
+    0.04 rad of the default, a stiffness within 15 % of nominal; rows where the map fails dropped):
+    the cold rows (X, P: the default start), the warm rows (the controls that reach the target
+    moved by up to 0.01 rad and 2 %, as a run starts from the previous step's) and the targets."""
+    X, Pr, _ = _rows(ctl, n, seed, tgt=tgt)
+    rng = np.random.default_rng(seed + 1)
+    apex = ctl.call.spec("apex_return").functions()[0]
+    T = np.zeros((n, 2))
+    Xw, Pw = X.copy(), np.repeat(Pr, n, axis=0)
+    keep = np.zeros(n, dtype=bool)
+    out = np.empty(len(ctl.outputs))
+    for i in range(n):
+        x, p = X[i].copy(), Pr[0].copy()
+        for c in controls:
+            in_p, at = ctl.solver.place(CONTROLS[c])
+            if in_p:
+                p[at] *= rng.uniform(0.85, 1.15)
+                Pw[i, at] = p[at] * rng.uniform(0.98, 1.02)
+            else:
+                x[at] += rng.uniform(-0.04, 0.04)
+                Xw[i, at] = x[at] + rng.uniform(-0.01, 0.01)
+        keep[i] = apex(x, p, out) == 0
+        T[i] = out[ctl._out_h] * tgt[0], out[ctl._out_v] * tgt[1]
+    c = np.ascontiguousarray
+    return c(X[keep]), Pr, c(Xw[keep]), c(Pw[keep]), c(T[keep])
+
+
+def _time_c(lib, apex, jac, X, Pr, T, cs, reps=20):
+    """Seconds per C solve: the best of 5 C loops over the rows (the rows' outputs, too)."""
+    OUT = np.empty((X.shape[0], compiled.N_HEAD + cs.n_out))
+    f = lib.harness_time
+    vp, i = ctypes.c_void_p, ctypes.c_int
+    f.argtypes = [vp, vp, vp, i, i, vp, i, i, vp, vp, vp, i]
+    args = (apex, jac, X.ctypes.data, X.shape[0], X.shape[1], Pr.ctypes.data, Pr.shape[0], Pr.shape[1],
+            T.ctypes.data, ctypes.addressof(cs), OUT.ctypes.data, reps)  # fmt: skip
+    return min(f(*args) for _ in range(5)), OUT
+
+
+def _time_numba(ctl, X, Pr, T, s, reps=20):
+    """Seconds per numba solve: its compiled rows entry point (one thread), the best of 5."""
     import time
 
+    OUT = np.empty((X.shape[0], ctl.solver.width))
+    ctl.solver._rows(X, Pr, T, s, OUT)
+    best = math.inf
+    for _ in range(5):
+        t0 = time.perf_counter()
+        for _ in range(reps):
+            ctl.solver._rows(X, Pr, T, s, OUT)
+        best = min(best, (time.perf_counter() - t0) / (reps * X.shape[0]))
+    return best
+
+
+@pytest.mark.skipif(not os.environ.get("SLIPMAPS_C_TIMING"), reason="SLIPMAPS_C_TIMING=1 times the C solve")
+def test_c_timing(lib):
+    """Microseconds per C solve from a C loop, beside the numba solve of the same rows, on targets
+    the map reaches (:func:`_reachable`): cold (from the default angle and nominal stiffness) and
+    warm (started near the controls that reach the target, as a run's steps are); and a map
+    kernel call alone. The warm rows are also compared with the numba solver's."""
+    with open("/proc/loadavg") as fh:
+        print("\nload before:", fh.read().strip())
     for name, controls, tgt in (
         ("geyer", ("touchdown_angle",), (0, 1)),
         ("geyer", ("touchdown_angle", "k"), (1, 1)),
@@ -342,46 +412,31 @@ def test_c_timing(lib):
         ("iterative", ("touchdown_angle", "k_d"), (1, 1)),
     ):
         ctl, (apex, jac) = _controller(name, controls)
-        X, Pr, T = _rows(ctl, 200, seed=3, tgt=tgt)
         s = ctl._settings[tgt]
         cs = deadbeat_c.c_settings(s)
-        OUT = np.empty((X.shape[0], compiled.N_HEAD + cs.n_out))
-        f = lib.harness_time
-        vp, i = ctypes.c_void_p, ctypes.c_int
-        f.argtypes = [vp, vp, vp, i, i, vp, i, i, vp, vp, vp, i]
-        best_c = min(
-            f(
-                apex,
-                jac,
-                X.ctypes.data,
-                X.shape[0],
-                X.shape[1],
-                Pr.ctypes.data,
-                1,
-                Pr.shape[1],
-                T.ctypes.data,
-                ctypes.addressof(cs),
-                OUT.ctypes.data,
-                20,
-            )  # fmt: skip
-            for _ in range(5)
-        )
-        ref = np.empty_like(OUT)
-        ctl.solver._rows(X, Pr, T, s, ref)
-        best_n = math.inf
-        for _ in range(5):
-            t0 = time.perf_counter()
-            for _ in range(20):
-                ctl.solver._rows(X, Pr, T, s, ref)
-            best_n = min(best_n, (time.perf_counter() - t0) / (20 * X.shape[0]))
-        ev = OUT[:, HEAD["evaluations"]].mean() + OUT[:, HEAD["jacobians"]].mean()
+        X, Pr, Xw, Pw, T = _reachable(ctl, controls, tgt, 400, seed=3)
+        cold, _ = _time_c(lib, apex, jac, X, Pr, T, cs)
+        cold_n = _time_numba(ctl, X, Pr, T, s)
+        warm, OUT = _time_c(lib, apex, jac, Xw, Pw, T, cs)
+        warm_n = _time_numba(ctl, Xw, Pw, T, s)
+        _compare(f"{name} {'+'.join(controls)} warm", ctl.solver.run(Xw, Pw, T, s), OUT, len(controls))
+        nj, ne = OUT[:, HEAD["jacobians"]].mean(), OUT[:, HEAD["evaluations"]].mean()
         reached = (OUT[:, HEAD["plan_status"]] == compiled.REACHED).mean()
+        # one kernel call: the apex map alone, from C
+        f = lib.harness_time_map
+        f.restype = ctypes.c_double
+        f.argtypes = [ctypes.c_void_p] * 4 + [ctypes.c_int]
+        w = np.empty(cs.n_out * (1 + max(cs.n_wrt, 0)))
+        t_apex = min(f(apex, Xw.ctypes.data, Pw.ctypes.data, w.ctypes.data, 20000) for _ in range(5))
+        t_jac = min(f(jac, Xw.ctypes.data, Pw.ctypes.data, w.ctypes.data, 20000) for _ in range(5))
+        own = warm - nj * t_jac - ne * t_apex  # rough: the kernels timed on one row
         with open("/proc/loadavg") as fh:
             load = fh.read().split()[0]
         print(
-            f"\n{name} {'+'.join(controls)}: C {best_c * 1e6:.2f} us/solve, "
-            f"numba {best_n * 1e6:.2f} us/solve, "
-            f"{ev:.2f} kernel calls/solve, reached {reached:.0%}, load {load}"
+            f"{name} {'+'.join(controls)}: warm C {warm * 1e6:.2f} us (numba {warm_n * 1e6:.2f}), "
+            f"{nj:.2f} Jacobian + {ne:.2f} apex calls (the solver's own about {own * 1e6:.2f} us), {len(T)} rows, reached {reached:.0%}; "
+            f"cold C {cold * 1e6:.2f} us (numba {cold_n * 1e6:.2f}); "
+            f"apex call {t_apex * 1e6:.3f} us, Jacobian call {t_jac * 1e6:.3f} us; load {load}"
         )
 
 
