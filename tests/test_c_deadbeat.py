@@ -434,7 +434,8 @@ def test_c_timing(lib):
             load = fh.read().split()[0]
         print(
             f"{name} {'+'.join(controls)}: warm C {warm * 1e6:.2f} us (numba {warm_n * 1e6:.2f}), "
-            f"{nj:.2f} Jacobian + {ne:.2f} apex calls (the solver's own about {own * 1e6:.2f} us), {len(T)} rows, reached {reached:.0%}; "
+            f"{nj:.2f} Jacobian + {ne:.2f} apex calls (the solver's own about {own * 1e6:.2f} us), "
+            f"{len(T)} rows, reached {reached:.0%}; "
             f"cold C {cold * 1e6:.2f} us (numba {cold_n * 1e6:.2f}); "
             f"apex call {t_apex * 1e6:.3f} us, Jacobian call {t_jac * 1e6:.3f} us; load {load}"
         )
