@@ -1,1 +1,2 @@
-"""slipmaps outside Python: the exported C library, compiled and called from Python (docs/c_export.md)."""
+"""slipmaps outside Python: the exported C library (the maps, the deadbeat solver) compiled and called
+from Python through ctypes (docs/c_export.md)."""
