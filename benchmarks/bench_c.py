@@ -67,6 +67,21 @@ def _best(f, repeat: int) -> float:
     return best
 
 
+def _side_by_side(libs: dict[str, CLibrary], spec, X, P, repeat: int) -> dict:
+    """Seconds per state of numba's batch form and of each C build, on the same rows."""
+    n = X.shape[0]
+    numba_rows = spec.functions()[1]
+    OUT = np.empty((n, spec.width))
+    STATUS = np.empty(n, dtype=np.int64)
+    t_numba = _best(lambda: numba_rows(X, P, OUT, STATUS), repeat) / n
+    row = {"ok": float(np.mean(STATUS == 0)), "numba_us": t_numba * 1e6}
+    for name, lib in libs.items():
+        t = _best(lambda lib=lib: lib.rows(spec.name, X, P, spec.width), repeat) / n
+        row[f"c_{name}_us"] = t * 1e6
+        row[f"ratio_{name}"] = t / t_numba
+    return row
+
+
 def measure(libs: dict[str, CLibrary], n: int, repeat: int) -> list[dict]:
     rng = np.random.default_rng(0)
     rows = []
@@ -78,16 +93,7 @@ def measure(libs: dict[str, CLibrary], n: int, repeat: int) -> list[dict]:
             spec = call.kernels[role]
             X = np.column_stack([rng.uniform(*RANGES[x], n) for x in spec.x])
             P = call.record(spec)[None, :]
-            numba_rows = spec.functions()[1]
-            OUT = np.empty((n, spec.width))
-            STATUS = np.empty(n, dtype=np.int64)
-            t_numba = _best(lambda f=numba_rows: f(X, P, OUT, STATUS), repeat) / n
-            row = {"map": info.name, "role": role, "ok": float(np.mean(STATUS == 0)), "numba_us": t_numba * 1e6}
-            for name, lib in libs.items():
-                t = _best(lambda lib=lib, spec=spec: lib.rows(spec.name, X, P, spec.width), repeat) / n
-                row[f"c_{name}_us"] = t * 1e6
-                row[f"ratio_{name}"] = t / t_numba
-            rows.append(row)
+            rows.append({"map": info.name, "role": role, **_side_by_side(libs, spec, X, P, repeat)})
     return rows
 
 

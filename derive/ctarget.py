@@ -1,11 +1,12 @@
 """The C target of the generator: every analytic map's role kernels as one dependency-free C99
 library, from the same declarations and the same lowering as the numba kernels.
 
-``slipmaps generate --target c DIR`` writes ``DIR/slipmaps.h`` and ``DIR/slipmaps.c`` (and the
-deadbeat solver, :mod:`.ctarget_control`). The kernels are the ones :func:`.generate.modules`
-declares, lowered by :func:`.lower.lower` once; the C template (``templates/c/kernels.c.j2``) renders
-the lowered steps as the numba template does, each piece of code printed by :mod:`.cexpr`. What the
-library holds:
+``slipmaps generate --target c DIR`` writes ``DIR/slipmaps.h`` and ``DIR/slipmaps.c`` (the
+maps) and ``DIR/slipmaps_deadbeat.h`` and ``DIR/slipmaps_deadbeat.c`` (the deadbeat solver: a port of
+the numba solver, runtime/control/compiled.py, on any exported map's role kernels). The kernels are
+the ones :func:`.generate.modules` declares, lowered by :func:`.lower.lower` once; the C template
+(``templates/c/kernels.c.j2``) renders the lowered steps as the numba template does, each piece of
+code printed by :mod:`.cexpr`. What the library holds:
 
 - every role kernel (a map's ``stance``, ``apex_return``, ``state_at``, their Jacobians, the
   halves' and the flights' roles) as ``int slipmaps_<kernel>_v(const double *x, const double *p,
@@ -33,8 +34,10 @@ from .lower import abi, lower
 from .render import render
 from .status import STATUS_CODES
 
-#: What the C library's files are called in the output directory.
+#: What the C library's files are called in the output directory: the maps, the deadbeat solver.
 HEADER, SOURCE = "slipmaps.h", "slipmaps.c"
+DEADBEAT_HEADER, DEADBEAT_SOURCE = "slipmaps_deadbeat.h", "slipmaps_deadbeat.c"
+SOURCES = (SOURCE, DEADBEAT_SOURCE)
 
 
 def _reaches_external(kernel: Kernel, memo: dict[str, bool]) -> bool:
@@ -500,7 +503,17 @@ def build(modules) -> dict[str, str]:
     text = source(helpers)
     used = tuple(h for h in helpers if text.count(f"slipmaps_{h}(") > 1)
     source = source(used)
-    return {HEADER: header, SOURCE: source}
+    # the deadbeat solver: a port of the numba solver (runtime/control/compiled.py), whose row head
+    # it writes
+    from slipmaps.runtime.control.compiled import HEAD
+
+    solver = {"head": list(HEAD), "header": DEADBEAT_HEADER, **common}
+    return {
+        HEADER: header,
+        SOURCE: source,
+        DEADBEAT_HEADER: render("c/deadbeat.h.j2", **solver),
+        DEADBEAT_SOURCE: render("c/deadbeat.c.j2", **solver),
+    }
 
 
 def write(directory: Path) -> list[Path]:

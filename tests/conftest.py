@@ -58,3 +58,27 @@ def pytest_sessionstart(session: pytest.Session) -> None:
 
     terminal = session.config.pluginmanager.get_plugin("terminalreporter")
     warmup.warm(processes, say=terminal.write_line if terminal is not None else print)
+
+
+@pytest.fixture(scope="session")
+def c_export(tmp_path_factory):
+    """The C target's library (``slipmaps generate --target c``) in a directory of this session,
+    each source compiled once with the export's strict flags into an object (``slipmaps.o``,
+    ``slipmaps_deadbeat.o``) that the C tests link into their libraries. Skips without a compiler."""
+    import subprocess
+
+    from slipmaps.runtime.export.clib import STRICT, compiler
+
+    cc = compiler()
+    if cc is None:
+        pytest.skip("no C compiler (set CC, or install gcc or clang)")
+    from slipmaps.derive import ctarget
+
+    out = tmp_path_factory.mktemp("c_export")
+    ctarget.write(out)
+    procs = [
+        subprocess.Popen([cc, *STRICT, "-fPIC", "-c", src, "-o", src.replace(".c", ".o")], cwd=out)
+        for src in ctarget.SOURCES
+    ]
+    assert all(p.wait() == 0 for p in procs), "the exported C does not compile warning-free"
+    return out

@@ -3,8 +3,8 @@
 ``geyer`` and ``iterative`` (the angle alone, the angle and a stiffness; REACHED, UNREACHABLE and
 MAP_FAILED rows) the same statuses and counts, and the same controls, residuals and outputs.
 
-The maps are numba ``cfunc`` wrappers of the generated numba kernels until ``slipmaps generate
---target c`` writes C maps: :func:`map_pointers` is the one place to swap them in.
+The maps are the exported C maps (``slipmaps generate --target c``, tests/conftest.py's
+``c_export``), which agree with the numba kernels to the bit (tests/test_c_export.py).
 
 Measured (this file, 2 cores shared): every compared quantity bit-identical (max difference 0.0)
 on every case; the test's bound is 1e-12 (relative with a floor of 1, absolute on the scaled
@@ -16,26 +16,19 @@ from __future__ import annotations
 import ctypes
 import math
 import os
-import shutil
-import subprocess
 import zlib
 
 import numpy as np
 import pytest
 import slipmaps
-from slipmaps.derive.render import render
-from slipmaps.derive.status import STATUS_CODES
 from slipmaps.generated.status import Status
 from slipmaps.runtime.control import compiled
 from slipmaps.runtime.control.bottom import BottomDeadbeat
 from slipmaps.runtime.control.deadbeat import CONTROLS, Deadbeat, default_angle
 from slipmaps.runtime.export import deadbeat_c
-
-CC = shutil.which("cc") or shutil.which("gcc")
-pytestmark = pytest.mark.skipif(CC is None, reason="no C compiler (cc or gcc) on PATH")
+from slipmaps.runtime.export.clib import compile_library
 
 P = slipmaps.HUMAN_RUNNER
-FLAGS = ["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 TOL = 1e-12
 HEAD = compiled.HEAD_AT
 #: The largest difference of each case (printed by the last test, with -s).
@@ -118,64 +111,31 @@ double harness_time_map(slipmaps_role_fn f, const double *x, const double *p, do
 """
 
 
-def sources() -> dict[str, str]:
-    """The solver's header and source, rendered as the C target renders them."""
-    data = {
-        "statuses": [{"name": n, "code": c, "message": m} for n, c, m in STATUS_CODES],
-        "head": compiled.HEAD,
-    }
-    return {
-        "slipmaps_deadbeat.h": render("c/deadbeat.h.j2", **data),
-        "slipmaps_deadbeat.c": render("c/deadbeat.c.j2", **data),
-    }
-
-
 @pytest.fixture(scope="module")
-def lib(tmp_path_factory):
-    d = tmp_path_factory.mktemp("c_deadbeat")
-    for name, text in sources().items():
-        (d / name).write_text(text)
-    (d / "harness.c").write_text(HARNESS)
-    # the solver as strict C99 on its own, then the library with the harness
-    subprocess.run([CC, *FLAGS, "-c", "slipmaps_deadbeat.c", "-o", "solver.o"], cwd=d, check=True)
-    so = d / "libdeadbeat.so"
-    cmd = [CC, *FLAGS, "-fPIC", "-shared", "slipmaps_deadbeat.c", "harness.c", "-o", str(so), "-lm"]
-    subprocess.run(cmd, cwd=d, check=True)
+def lib(c_export):
+    """The exported maps and solver (tests/conftest.py's ``c_export``) with the harness."""
+    (c_export / "harness.c").write_text(HARNESS)
+    so = c_export / "libdeadbeat.so"
+    objects = [c_export / "slipmaps.o", c_export / "slipmaps_deadbeat.o"]
+    compile_library([*objects, c_export / "harness.c"], so, extra=["-I", str(c_export)])
     lib = deadbeat_c.bind(ctypes.CDLL(str(so)))
     lib.harness_time.restype = ctypes.c_double
+    _LIB["lib"] = lib
     return lib
 
 
-_CFUNCS: dict = {}
-
-
-def _cfunc(kernel, nx: int, np_: int, n_out: int):
-    """A numba kernel ``kernel(x, p, out) -> status`` as a C function ``int f(const double *x,
-    const double *p, double *out)``."""
-    import numba
-    from numba import types
-
-    key = (kernel, nx, np_, n_out)
-    if key not in _CFUNCS:
-        ptr = types.CPointer(types.float64)
-
-        @numba.cfunc(types.int32(ptr, ptr, ptr), error_model="numpy")
-        def f(x, p, out):
-            return kernel(numba.carray(x, nx), numba.carray(p, np_), numba.carray(out, n_out))
-
-        _CFUNCS[key] = f
-    return _CFUNCS[key]
+#: The library the fixture built (the maps' vector forms are looked up in it).
+_LIB: dict = {}
 
 
 def map_pointers(apex, jac=None) -> tuple[int, int | None]:
-    """(apex, jac) as C function pointers for the C solver, from the index's kernel specs. The
-    numba kernels as cfuncs for now; the generated C maps (``slipmaps_<kernel>_v`` of ``slipmaps
-    generate --target c``) replace this body."""
-    a = _cfunc(apex.functions()[0], len(apex.x), len(apex.p), len(apex.outputs)).address
-    if jac is None:
-        return a, None
-    width = len(jac.outputs) * (1 + len(jac.wrt))
-    return a, _cfunc(jac.functions()[0], len(jac.x), len(jac.p), width).address
+    """(apex, jac) as C function pointers for the C solver, from the index's kernel specs: the
+    exported C maps' vector forms ``slipmaps_<kernel>_v``."""
+
+    def address(spec) -> int:
+        return ctypes.cast(getattr(_LIB["lib"], f"slipmaps_{spec.name}_v"), ctypes.c_void_p).value
+
+    return address(apex), None if jac is None else address(jac)
 
 
 def _controller(name, controls, **options):

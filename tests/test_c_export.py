@@ -2,7 +2,7 @@
 with warnings as errors and agrees with the numba kernels on random states, role by role.
 
 Needs a C compiler (CI has gcc); skipped without one. The library is generated and compiled once per
-session (about 20 s + 10 s).
+session (tests/conftest.py's ``c_export``: about 20 s + 10 s).
 """
 
 from __future__ import annotations
@@ -12,9 +12,7 @@ import pytest
 import slipmaps
 from slipmaps.runtime.api.calls import Call
 from slipmaps.runtime.api.index import halves, model_kernels
-from slipmaps.runtime.export.clib import CLibrary, compile_library, compiler
-
-pytestmark = pytest.mark.skipif(compiler() is None, reason="no C compiler")
+from slipmaps.runtime.export.clib import CLibrary, compile_library
 
 #: States per map and role at the default options (the issue's 10^5), and per option choice.
 N_DEFAULT = 100_000
@@ -78,13 +76,8 @@ def close(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 @pytest.fixture(scope="module")
-def clib(tmp_path_factory):
-    from derive import ctarget
-
-    out = tmp_path_factory.mktemp("c")
-    ctarget.write(out)
-    lib = compile_library([out / ctarget.SOURCE], out / "libslipmaps.so")
-    return CLibrary(lib)
+def clib(c_export):
+    return CLibrary(compile_library([c_export / "slipmaps.o"], c_export / "libmaps.so"))
 
 
 def cases():
