@@ -405,3 +405,47 @@ def test_report_measured():
     print("\nmax differences, C vs numba (and the plan statuses' counts):")
     for k, v in MEASURED.items():
         print(f"  {k}: {v}")
+
+
+def test_stairs_run_with_the_c_controller(lib, monkeypatch):
+    """The stairs scenario (examples/stairs.toml: the exact plant in Python) run with every deadbeat
+    solve in C (the C solver on the exported C maps, in place of the numba solver) takes the same
+    steps as ``slipmaps run``: the same statuses, controls and states, to the last bit measured."""
+    from pathlib import Path
+
+    from slipmaps.runtime.control import deadbeat
+
+    scenario = Path(__file__).resolve().parent.parent / "examples" / "stairs.toml"
+    reference = slipmaps.run(scenario).columns()
+    calls = []
+
+    def c_bind(apex, jac):
+        a = ctypes.cast(getattr(lib, f"slipmaps_{apex.__name__}_v"), ctypes.c_void_p).value
+        j = ctypes.cast(getattr(lib, f"slipmaps_{jac.__name__}_v"), ctypes.c_void_p).value
+
+        def rows(X, P, T, s, OUT):
+            out, refused = deadbeat_c.solve_rows(lib, a, j, X, P, T, s)
+            assert refused == 0
+            OUT[:] = out
+            calls.append(len(X))
+
+        return rows
+
+    monkeypatch.setattr(compiled, "bind", c_bind)
+    deadbeat._prepared.cache_clear()
+    try:
+        with_c = slipmaps.run(scenario).columns()
+    finally:
+        deadbeat._prepared.cache_clear()
+    assert calls, "the run never called the C solver"
+    assert len(with_c["step"]) == len(reference["step"]) == 14
+    timings = {"solve_us", "bottom_us"}  # wall-clock times of the solves, not results
+    assert timings <= set(reference)
+    for name, ref in reference.items():
+        if name in timings:
+            continue
+        got = with_c[name]
+        if np.asarray(ref).dtype.kind in "fc":
+            np.testing.assert_allclose(got, ref, rtol=1e-12, atol=1e-12, err_msg=name)
+        else:
+            np.testing.assert_array_equal(got, ref, err_msg=name)
