@@ -424,6 +424,11 @@ def _shape(values) -> str:
     return "matrix" if isinstance(first[0], list) else "vector"
 
 
+def _comment(text: str) -> str:
+    """``text`` safe inside a C comment, on one line."""
+    return " ".join(text.replace("*/", "* /").split())
+
+
 def _n_values(kernel: Kernel) -> int:
     """The values among a Jacobian role kernel's outputs (the derivatives, named ``d_...``, follow)."""
     names = kernel.output_names
@@ -455,7 +460,12 @@ def build(modules) -> dict[str, str]:
             raise CPrintError(f"kernel {k.name}: {exc}") from exc
     # the parameter records: one struct per distinct p layout, named after the first role of a
     # module that takes it (a map's roles share one)
+    # each map's options at their defaults, as kernel arguments (a choice's code): the header says them
+    from slipmaps.runtime.api.index import halves, maps
+
+    defaults = {info.module: info.encode(info.resolve({})) for info in (*maps(), *halves())}
     records: dict[tuple[str, ...], str] = {}
+    records_docs: dict[str, dict[str, str]] = {}
     publics = []
     for k in roles:
         p = tuple(k.layout.p)
@@ -465,9 +475,24 @@ def build(modules) -> dict[str, str]:
             while name in records.values():
                 name = f"slipmaps_{k.name}_params"
             records[p] = name
+        docs = {a.name: a.doc for a in k.args}
+        out_docs = {f.name: f.doc + (f" [{f.unit}]" if f.unit else "") for f in k.outputs.fields()}
+        n_values = _n_values(k)
+        wrt = [
+            n.split("__", 1)[1] for n in k.output_names[n_values:] if n.startswith(f"d_{k.output_names[0]}__")
+        ]
+        # a field's doc from any role that takes it as an argument
+        rec_docs = records_docs.setdefault(records[p], {f: "" for f in p})
+        rec_docs.update({f: _comment(docs[f]) for f in p if not rec_docs[f] and f in docs})
+        for f, v in defaults.get(k.module.removesuffix("_jacobian"), {}).items():
+            if f in rec_docs and "(default" not in rec_docs[f]:
+                rec_docs[f] += f" (default {v:g})"
         publics.append(
             {
                 "name": f"slipmaps_{k.name}",
+                "x_docs": {f: _comment(docs.get(f, "")) for f in k.layout.x},
+                "out_docs": {f: _comment(out_docs.get(f, "")) for f in k.output_names[:n_values]},
+                "wrt": wrt,
                 "kernel": k.name,
                 "summary": k.summary.replace("*/", "* /"),
                 "x": list(k.layout.x),
@@ -475,7 +500,7 @@ def build(modules) -> dict[str, str]:
                 "params": records[p],
                 "out": list(k.output_names),
                 # the values (a Jacobian's derivatives follow them: d_<output>_d_<input>)
-                "n_values": _n_values(k),
+                "n_values": n_values,
                 "module": k.module,
             }
         )
@@ -484,7 +509,7 @@ def build(modules) -> dict[str, str]:
     header = render(
         "c/slipmaps.h.j2",
         roles=publics,
-        records=[{"name": n, "fields": list(p)} for p, n in records.items()],
+        records=[{"name": n, "fields": list(p), "docs": records_docs[n]} for p, n in records.items()],
         **common,
     )
 
