@@ -5,8 +5,10 @@ For every analytic map at its default options: the apex return and its Jacobian 
 same ``--n`` states near the human runner's gait (apex 0.9-1.3 m, 3-6 m/s, touchdown angle
 0.2-0.4 rad): numba's generated batch form (``<kernel>_rows``, serial) and the C library's batch
 driver ``slipmaps_rows`` (one ctypes call per batch: a C loop), compiled with ``-O2`` and with
-``-O2 -fno-math-errno`` (the kernels never read errno: numba's error model is numpy's). Best of
-``--repeat``. Target: the C apex return within 1.2x numba's per-state cost.
+``-O2 -fno-math-errno`` (the kernels never read errno: numba's error model is numpy's). Then the
+deadbeat step: the C solver on the C maps beside the numba solver on the numba maps, on the same warm
+rows (``--n`` / 50 of them), with the same answers. Best of ``--repeat``. Targets: the C apex return
+within 1.2x numba's per-state cost; the C deadbeat step within 1 us for geyer, 10 us for iterative.
 
     python benchmarks/bench_c.py [--n N] [--repeat R] [--json]
 """
@@ -50,7 +52,7 @@ def build(out: Path) -> dict[str, CLibrary]:
 
     def one(item):
         name, extra = item
-        lib = compile_library([out / ctarget.SOURCE], out / f"lib{name}.so", extra=extra)
+        lib = compile_library([out / s for s in ctarget.SOURCES], out / f"lib{name}.so", extra=extra)
         return name, CLibrary(lib)
 
     with ThreadPoolExecutor(2) as pool:
@@ -97,6 +99,68 @@ def measure(libs: dict[str, CLibrary], n: int, repeat: int) -> list[dict]:
     return rows
 
 
+#: The deadbeat steps timed: (map, controls), warm (a reachable target near the apex, the start
+#: controls near the ones that reach it, as in a run). Targets: a C step within 1 us for geyer and
+#: 10 us for iterative.
+DEADBEAT = (
+    ("geyer", ("touchdown_angle",)),
+    ("geyer", ("touchdown_angle", "k")),
+    ("iterative", ("touchdown_angle",)),
+    ("iterative", ("touchdown_angle", "k_d")),
+)
+DEADBEAT_TARGET_US = {"geyer": 1.0, "iterative": 10.0}
+
+
+def _deadbeat_case(lib: CLibrary, name: str, controls: tuple, n: int, repeat: int, rng) -> dict:
+    from slipmaps.runtime.control.deadbeat import Deadbeat, default_angle
+    from slipmaps.runtime.export import deadbeat_c
+
+    ctl = Deadbeat(name, slipmaps.HUMAN_RUNNER, controls=controls)
+    h, v = rng.uniform(0.95, 1.1, n), rng.uniform(4.0, 5.0, n)
+    angle = default_angle(slipmaps.HUMAN_RUNNER, v)
+    X = ctl._inputs({"apex_height": h, "apex_speed": v, "touchdown_angle": angle, "ground": 0.0 * h}, n)
+    P = ctl._record_clipped()[None, :]
+    # reachable targets: the next apex of controls near the start (the angle +- 0.02 rad, a
+    # stiffness control +- 10 %), run through the map
+    apex = ctl.call.spec("apex_return")
+    Xt, Pt = X.copy(), np.repeat(P, n, axis=0)
+    Xt[:, apex.x.index("q_th_td")] += rng.uniform(-0.02, 0.02, n)
+    for c in controls[1:]:
+        Pt[:, apex.p.index(c)] *= rng.uniform(0.9, 1.1, n)
+    nxt = np.empty((n, apex.width))
+    apex.functions()[1](Xt, Pt, nxt, np.empty(n, dtype=np.int64))
+    both = len(controls) > 1
+    h_next, v_next = nxt[:, apex.outputs.index("apex_height")], nxt[:, apex.outputs.index("apex_speed")]
+    T = np.column_stack([h_next if both else 0.0 * h, v_next])
+    s = ctl._settings[(1, 1) if both else (0, 1)]
+    a = lib.address(ctl.call.spec("apex_return").name)
+    j = lib.address(ctl.call.spec("apex_return_jacobian").name)
+    OUT = np.empty((n, ctl.solver.width))
+    t_numba = _best(lambda: ctl.solver._rows(X, P, T, s, OUT), repeat) / n
+    t_c = _best(lambda: deadbeat_c.solve_rows(lib.lib, a, j, X, P, T, s), repeat) / n
+    out_c, _ = deadbeat_c.solve_rows(lib.lib, a, j, X, P, T, s)
+    same = np.array_equal(out_c[:, :5], OUT[:, :5]) and np.allclose(out_c, OUT, rtol=1e-12, equal_nan=True)
+    return {
+        "map": name,
+        "controls": "+".join(controls),
+        "reached": float(np.mean(OUT[:, 0] == 0)),
+        "evaluations": float(np.mean(OUT[:, 3])),
+        "numba_us": t_numba * 1e6,
+        "c_us": t_c * 1e6,
+        "same": bool(same),
+    }
+
+
+def measure_deadbeat(lib: CLibrary, n: int, repeat: int) -> list[dict]:
+    """Per step: the C solver on the C maps (one ctypes call: a C loop over the rows) beside the
+    numba solver on the numba maps (its serial batch form), on the same rows, and the same answers."""
+    from slipmaps.runtime.export import deadbeat_c
+
+    deadbeat_c.bind(lib.lib)
+    rng = np.random.default_rng(1)
+    return [_deadbeat_case(lib, name, controls, n, repeat, rng) for name, controls in DEADBEAT]
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=100_000, help="states per map and role")
@@ -110,9 +174,10 @@ def main(argv=None) -> int:
     with tempfile.TemporaryDirectory() as tmp:
         libs = build(Path(tmp))
         rows = measure(libs, args.n, args.repeat)
+        steps = measure_deadbeat(libs["O2"], max(args.n // 50, 200), args.repeat)
     info = {**machine(), "cc": cc, "flags": " ".join(STRICT)}
     if args.json:
-        print(json.dumps({"machine": info, "rows": rows}, indent=1))
+        print(json.dumps({"machine": info, "rows": rows, "deadbeat": steps}, indent=1))
         return 0
     print(f"C library against numba, per state, one core ({args.n} states, best of {args.repeat})")
     print(f"machine: {info['cpu']}, load {info['load_1min']:.2f}; {cc} {info['flags']}")
@@ -132,6 +197,16 @@ def main(argv=None) -> int:
         f"target: the C apex return (-O2) within {TARGET_RATIO}x numba's per state: "
         f"met for {sum(met)} of {len(met)} maps"
     )
+    print("\nthe deadbeat step (warm: a reachable target near the apex), per step, one core, -O2")
+    head = f"{'map':10s} {'controls':22s} {'reached':>7s} {'evals':>6s} {'numba us':>9s} {'C us':>8s}"
+    print(head + f" {'target':>7s} same")
+    for r in steps:
+        target = DEADBEAT_TARGET_US[r["map"]]
+        print(
+            f"{r['map']:10s} {r['controls']:22s} {r['reached']:7.2f} {r['evaluations']:6.1f} "
+            f"{r['numba_us']:9.2f} {r['c_us']:8.2f} {target:7.1f} {'yes' if r['same'] else 'NO'}"
+            + ("" if r["c_us"] <= target else "  (target not met)")
+        )
     return 0
 
 
