@@ -7,7 +7,9 @@ slopes, values, touchdown times and angles, and the same ``where`` and ``knot``.
 
 Measured (this file, 2 cores shared): every compared value bit-identical (max difference 0.0) on
 every case; the test's bound is 1e-12 (relative, floor 1). ``SLIPMAPS_C_TIMING=1`` also times the
-C evaluation from a C loop (printed with -s).
+C evaluation from a C loop (printed with -s): measured on 64-knot policies, load 1.4 on 2 cores,
+controls_at 50 ns for 3 controls (19 ns for one), touchdown 1.69 us (numba's touchdown_rows
+1.82 us per row), touchdown and 3 controls 1.73 us.
 """
 
 from __future__ import annotations
@@ -246,6 +248,34 @@ def test_c_touchdown_is_the_numba_touchdown(lib, name):
             _close(f"{name} touchdown", ref["t" if c == "t" else c][:m], got[c])
         np.testing.assert_array_equal(got["where"], where[:m])
         np.testing.assert_array_equal(got["knot"], knot[:m])
+
+
+@pytest.mark.parametrize("name", ["geyer angle", "iterative angle+k_d", "iterative angle+k_d failing"])
+def test_c_touchdown_at_the_end_knots(lib, name):
+    """Grounds within round-off of the first and last knots' (the _EDGE branches: a root at the
+    first knot in the table or above it; the held last angle in the table or below it)."""
+    tb = policy(name)._tables
+    n = int(tb.counts[0])
+    T, A, MA = tb.T, tb.values["touchdown_angle"], tb.slopes["touchdown_angle"]
+    rng = np.random.default_rng(zlib.crc32((name + " ends").encode()))
+    g = np.concatenate(
+        [
+            H - 0.5 * tb.g_f * T[0, k] ** 2 - tb.q_r_td * np.cos(A[0, k]) + rng.uniform(-1e-12, 1e-12, 400)
+            for k in (0, n - 1)
+        ]
+    )
+    h = np.full(g.size, H)
+    t, a = np.empty(g.size), np.empty(g.size)
+    where, knot = np.empty(g.size, dtype=np.int64), np.empty(g.size, dtype=np.int64)
+    swing_tables.touchdown_rows(h, g, tb.g_f, tb.q_r_td, T, A, MA, tb.counts, t, a, where, knot)
+    got = swing_c.touchdown_rows(lib, h, g, tb.g_f, tb.q_r_td, T, A, MA, tb.counts)
+    _close(f"{name} end knots", t, got["t"])
+    _close(f"{name} end knots", a, got["angle"])
+    np.testing.assert_array_equal(got["where"], where)
+    np.testing.assert_array_equal(got["knot"], knot)
+    inside = where == swing_tables.IN_RANGE
+    assert (where == swing_tables.ABOVE_RANGE).any() and (inside & (t <= T[0, 0])).any()
+    assert (inside & (knot == n - 2) & (t > T[0, n - 1])).any()  # the last knot, to round-off
 
 
 def test_the_failing_policy_has_failed_and_unreachable_grounds():
