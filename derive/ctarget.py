@@ -3,7 +3,9 @@ library, from the same declarations and the same lowering as the numba kernels.
 
 ``slipmaps generate --target c DIR`` writes ``DIR/slipmaps.h`` and ``DIR/slipmaps.c`` (the
 maps) and ``DIR/slipmaps_deadbeat.h`` and ``DIR/slipmaps_deadbeat.c`` (the deadbeat solver: a port of
-the numba solver, runtime/control/compiled.py, on any exported map's role kernels). The kernels are
+the numba solver, runtime/control/compiled.py, on any exported map's role kernels) and
+``DIR/slipmaps_swing.h``, ``DIR/slipmaps_swing.c`` (the swing-leg policy's evaluation, a port of
+runtime/control/swing_tables.py, on tables ``slipmaps.swing_policy`` makes). The kernels are
 the ones :func:`.generate.modules` declares, lowered by :func:`.lower.lower` once; the C template
 (``templates/c/kernels.c.j2``) renders the lowered steps as the numba template does, each piece of
 code printed by :mod:`.cexpr`. What the library holds:
@@ -37,7 +39,8 @@ from .status import STATUS_CODES
 #: What the C library's files are called in the output directory: the maps, the deadbeat solver.
 HEADER, SOURCE = "slipmaps.h", "slipmaps.c"
 DEADBEAT_HEADER, DEADBEAT_SOURCE = "slipmaps_deadbeat.h", "slipmaps_deadbeat.c"
-SOURCES = (SOURCE, DEADBEAT_SOURCE)
+SWING_HEADER, SWING_SOURCE = "slipmaps_swing.h", "slipmaps_swing.c"
+SOURCES = (SOURCE, DEADBEAT_SOURCE, SWING_SOURCE)
 
 
 def _reaches_external(kernel: Kernel, memo: dict[str, bool]) -> bool:
@@ -538,6 +541,9 @@ def build(modules) -> dict[str, str]:
         SOURCE: source,
         DEADBEAT_HEADER: render("c/deadbeat.h.j2", **solver),
         DEADBEAT_SOURCE: render("c/deadbeat.c.j2", **solver),
+        # the swing-leg policy's evaluation (runtime/control/swing_tables.py): tables made in Python
+        SWING_HEADER: render("c/swing.h.j2", swing_header=SWING_HEADER, **common),
+        SWING_SOURCE: render("c/swing.c.j2", swing_header=SWING_HEADER, **common),
     }
 
 

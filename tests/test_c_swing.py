@@ -21,10 +21,9 @@ import zlib
 import numpy as np
 import pytest
 import slipmaps
-from slipmaps.derive.render import render
 from slipmaps.runtime.control import swing_tables
 from slipmaps.runtime.export import swing_c
-from slipmaps.runtime.export.clib import STRICT, compile_library, compiler
+from slipmaps.runtime.export.clib import compile_library
 
 P = slipmaps.HUMAN_RUNNER
 TOL = 1e-12
@@ -101,31 +100,15 @@ double harness_time_touchdown(int which, double g, double q, const double *t, in
 
 
 @pytest.fixture(scope="module")
-def lib(tmp_path_factory):
-    """The swing templates rendered as derive/ctarget.py renders them, each compiled alone with
-    the export's strict flags, and built with the harness into a library."""
-    cc = compiler()
-    if cc is None:
-        pytest.skip("no C compiler (set CC, or install gcc or clang)")
-    import subprocess
-
-    from slipmaps.derive.ctarget import MAX_NODES, STATUS_CODES
-
-    out = tmp_path_factory.mktemp("c_swing")
-    common = {
-        "statuses": [{"name": n, "code": c, "doc": d} for n, c, d in STATUS_CODES],
-        "max_nodes": MAX_NODES,
-    }
-    (out / "slipmaps_swing.h").write_text(render("c/swing.h.j2", **common))
-    (out / "slipmaps_swing.c").write_text(render("c/swing.c.j2", **common))
-    (out / "harness.c").write_text(HARNESS)
-    for src in ("slipmaps_swing.c", "harness.c"):
-        run = subprocess.run(
-            [cc, *STRICT, "-c", src, "-o", "/dev/null"], cwd=out, capture_output=True, text=True
-        )
-        assert run.returncode == 0, run.stderr
+def lib(c_export):
+    """The exported swing evaluation (tests/conftest.py's ``c_export``: rendered by
+    ``slipmaps generate --target c`` and compiled with the export's strict flags) built with the
+    harness into a library."""
+    (c_export / "swing_harness.c").write_text(HARNESS)
     so = compile_library(
-        [out / "slipmaps_swing.c", out / "harness.c"], out / "libswing.so", extra=["-I", str(out)]
+        [c_export / "slipmaps_swing.o", c_export / "swing_harness.c"],
+        c_export / "libswing.so",
+        extra=["-I", str(c_export)],
     )
     return swing_c.bind(ctypes.CDLL(str(so)))
 
