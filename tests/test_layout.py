@@ -3,7 +3,7 @@
 Read from the sources (``ast``), every import counted, also those inside functions:
 
 - a module of ``runtime/<package>/`` imports only from packages at its level or below:
-  ``api`` < ``exact`` < ``analysis``, ``sweep``, ``studies``, ``control`` < ``report`` < ``cli``
+  ``api`` < ``exact`` < ``analysis``, ``sweep``, ``studies``, ``control`` < ``report``, ``export`` < ``cli``
   (the top-level package ``runtime/public`` sits above them all); a backend is found by name from
   the index, not imported by the API;
 - the modules' import graph has no cycle;
@@ -28,6 +28,7 @@ RANK = {
     "studies": 2,
     "control": 2,
     "report": 3,
+    "export": 3,
     "cli": 4,
     "public": 5,
 }
