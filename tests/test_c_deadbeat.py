@@ -407,16 +407,18 @@ def test_report_measured():
         print(f"  {k}: {v}")
 
 
-def test_stairs_run_with_the_c_controller(lib, monkeypatch):
+@pytest.mark.parametrize("overrides", [{}, {"two_stage": True}], ids=["apex", "two-stage"])
+def test_stairs_run_with_the_c_controller(lib, monkeypatch, overrides):
     """The stairs scenario (examples/stairs.toml: the exact plant in Python) run with every deadbeat
-    solve in C (the C solver on the exported C maps, in place of the numba solver) takes the same
-    steps as ``slipmaps run``: the same statuses, controls and states, to the last bit measured."""
+    solve in C (the C solver on the exported C maps, in place of the numba solver; two-stage: k_d
+    chosen again at the bottom, on the decompression half's C kernel) takes the same steps as
+    ``slipmaps run``: the same statuses, controls and states (measured: to the last bit)."""
     from pathlib import Path
 
     from slipmaps.runtime.control import deadbeat
 
     scenario = Path(__file__).resolve().parent.parent / "examples" / "stairs.toml"
-    reference = slipmaps.run(scenario).columns()
+    reference = slipmaps.run(scenario, **overrides).columns()
     calls = []
 
     def c_bind(apex, jac):
@@ -434,10 +436,12 @@ def test_stairs_run_with_the_c_controller(lib, monkeypatch):
     monkeypatch.setattr(compiled, "bind", c_bind)
     deadbeat._prepared.cache_clear()
     try:
-        with_c = slipmaps.run(scenario).columns()
+        with_c = slipmaps.run(scenario, **overrides).columns()
     finally:
         deadbeat._prepared.cache_clear()
     assert calls, "the run never called the C solver"
+    if overrides.get("two_stage"):
+        assert np.isfinite(reference["bottom_us"]).any(), "the two-stage run never solved at the bottom"
     assert len(with_c["step"]) == len(reference["step"]) == 14
     timings = {"solve_us", "bottom_us"}  # wall-clock times of the solves, not results
     assert timings <= set(reference)
