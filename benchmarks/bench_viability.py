@@ -19,6 +19,10 @@ Parts (``--part``, repeatable; default all but ``scale``):
   against the exact map: the false-viable share, the cost per step, and where the false-viable pairs
   are (their states, next to the exact kernel's border or not; their exact next state's cell).
 - ``retraction``: vibly's grid with a retraction rate (-3 ... 0 rad/s) as a second action.
+- ``retraction2d``: retraction with k_d on a (height, speed) grid of vibly's runner (``--n`` x
+  ``--n`` states, 2 ``--n`` + 1 angles, 5 k_d in [k/2, 2k], 5 rates in [-3, 0] rad/s; the exact map):
+  the kernel and the measures with the actions angle; angle and k_d; angle and rate; all three; both
+  rules for the grid's border.
 - ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``): seconds and
   peak memory (ru_maxrss).
 
@@ -388,6 +392,59 @@ def part_retraction() -> dict:
     return out
 
 
+def part_retraction2d(n: int) -> dict:
+    """Retraction with k_d on vibly's (height, speed) grid: per set of actions and ``outside`` rule the
+    kernel, the states with a step that does not fail, the mean over the kernel of the share of
+    touchdown angles for which some choice of the other actions is viable, and of the measure (the
+    share of all action tuples that are viable)."""
+    heights, speeds = np.linspace(0.5, 2.4, n), np.linspace(0.5, 7.0, n)
+    angles = np.radians(np.linspace(-10.0, 70.0, 2 * n + 1))
+    k_d = np.linspace(4100.0, 16400.0, 5)
+    rates = np.linspace(-3.0, 0.0, 5)
+    cases = {
+        "angle": {},
+        "angle, k_d": {"k_d": k_d},
+        "angle, rate": {"retraction_rate": rates},
+        "angle, k_d, rate": {"k_d": k_d, "retraction_rate": rates},
+    }
+    out = {
+        "grid": {"n": n, "angles": angles.size, "k_d": k_d.tolist(), "rates": rates.tolist()},
+        "cases": {},
+    }
+    for outside in ("fail", "edge"):
+        for label, actions in cases.items():
+            vs = slipmaps.viability(
+                "exact",
+                VIBLY,
+                apex_height=heights,
+                apex_speed=speeds,
+                touchdown_angle=angles,
+                outside=outside,
+                **actions,
+            )
+            extra = tuple(range(3, vs.viable.ndim))
+            angle_ok = vs.viable.any(axis=extra) if extra else vs.viable
+            safe = (~vs.failed).any(axis=tuple(range(2, vs.failed.ndim)))
+            share = angle_ok.mean(axis=2)
+            row = {
+                "pairs": int(vs.failed.size),
+                "kernel_states": int(vs.kernel.sum()),
+                "states_with_a_safe_step": int(safe.sum()),
+                "mean_angle_share_in_kernel": float(share[vs.kernel].mean()) if vs.kernel.any() else 0.0,
+                "max_angle_share": float(share.max()),
+                "mean_measure_in_kernel": float(vs.measure[vs.kernel].mean()) if vs.kernel.any() else 0.0,
+                "rounds": vs.rounds,
+                "seconds": vs.seconds["map"] + vs.seconds["kernel"],
+            }
+            if "retraction_rate" in actions:
+                per_rate = vs.viable.sum(axis=tuple(range(vs.viable.ndim - 1)))
+                counts = zip(rates, per_rate, strict=True)
+                row["viable_pairs_per_rate"] = {f"{r:g}": int(c) for r, c in counts}
+            out["cases"][f"{label} ({outside})"] = row
+            print(label, outside, json.dumps(row), flush=True)
+    return out
+
+
 def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
     heights = np.linspace(0.5, 2.4, n)
     speeds = np.linspace(0.5, 7.0, n)
@@ -415,7 +472,7 @@ def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parts = ("vibly", "maps", "maps2d", "iterative2d", "stiffness", "retraction", "scale")
+    parts = ("vibly", "maps", "maps2d", "iterative2d", "stiffness", "retraction", "retraction2d", "scale")
     ap.add_argument("--part", action="append", choices=parts)
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--n", type=int, default=30, help="points per axis (stiffness, scale)")
@@ -438,6 +495,8 @@ def main() -> None:
             out["iterative2d"] = part_iterative2d(args.n)
         elif part == "retraction":
             out["retraction"] = part_retraction()
+        elif part == "retraction2d":
+            out["retraction2d"] = part_retraction2d(args.n)
         elif part == "stiffness":
             out["stiffness"] = part_stiffness(args.n, not args.no_levels)
         else:
