@@ -15,7 +15,14 @@ Parts (``--part``, repeatable; default all but ``scale``):
   axis), both discretisations (``outside`` fail and edge).
 - ``maps2d``: ``iterative`` and ``geyer-vs`` against the exact map on the stiffness part's (height,
   speed) grid of vibly's runner with k_d free.
+- ``iterative2d``: ``iterative``'s options (``nodes``, ``iterations``) on the ``maps2d`` grid
+  against the exact map: the false-viable share, the cost per step, and where the false-viable pairs
+  are (their states, next to the exact kernel's border or not; their exact next state's cell).
 - ``retraction``: vibly's grid with a retraction rate (-3 ... 0 rad/s) as a second action.
+- ``retraction2d``: retraction with k_d on a (height, speed) grid of vibly's runner (``--n`` x
+  ``--n`` states, 2 ``--n`` + 1 angles, 5 k_d in [k/2, 2k], 5 rates in [-3, 0] rad/s; the exact map):
+  the kernel and the measures with the actions angle; angle and k_d; angle and rate; all three; both
+  rules for the grid's border.
 - ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``): seconds and
   peak memory (ru_maxrss).
 
@@ -252,18 +259,104 @@ def part_stiffness(n: int, levels: bool = True) -> dict:
 def part_maps2d(n: int) -> dict:
     """The variable-stiffness maps against the exact one on vibly's (height, speed) grid with k_d free
     (the stiffness part's grid)."""
-    grid = {
-        "apex_height": np.linspace(0.5, 2.4, n),
-        "apex_speed": np.linspace(0.5, 7.0, n),
-        "touchdown_angle": np.radians(np.linspace(-10.0, 70.0, 2 * n + 1)),
-        "k_d": np.linspace(4100.0, 16400.0, 5),
-    }
+    grid = _grid2d(n)
     ref = slipmaps.viability("exact", VIBLY, **grid)
     out = {"exact": {"kernel_states": int(ref.kernel.sum()), "viable_pairs": int(ref.viable.sum())}}
     for name in ("iterative", "geyer-vs"):
         t = time.perf_counter()
         vs = slipmaps.viability(name, VIBLY, **grid)
         out[name] = {"seconds": time.perf_counter() - t, **_compare(vs, ref)}
+    return out
+
+
+def _grid2d(n: int) -> dict:
+    return {
+        "apex_height": np.linspace(0.5, 2.4, n),
+        "apex_speed": np.linspace(0.5, 7.0, n),
+        "touchdown_angle": np.radians(np.linspace(-10.0, 70.0, 2 * n + 1)),
+        "k_d": np.linspace(4100.0, 16400.0, 5),
+    }
+
+
+def _border(kernel: np.ndarray) -> np.ndarray:
+    """The kernel's states with a 4-neighbour outside it (or on the grid's edge)."""
+    pad = np.pad(kernel, 1, constant_values=False)
+    inner = pad[:-2, 1:-1] & pad[2:, 1:-1] & pad[1:-1, :-2] & pad[1:-1, 2:]
+    return kernel & ~inner
+
+
+def _where_false_viable(vs, ref) -> dict:
+    """Where the pairs ``vs`` calls viable and ``ref`` does not lie: their states (how many, how many
+    on the exact kernel's border), the exact step (fails, leaves the grid, or its cell: how many of
+    its 4 nodes are in the exact kernel), and how far the two next states are apart in grid cells."""
+    fv = vs.viable & ~ref.viable
+    idx = np.argwhere(fv)
+    h, v = ref.states["apex_height"], ref.states["apex_speed"]
+    states = {(int(i), int(j)) for i, j, *_ in idx}
+    border = _border(ref.kernel)
+    nxt = ref.next_state[fv]
+    ok = ~ref.failed[fv]
+    ci = np.digitize(nxt[ok, 0], h)
+    cj = np.digitize(nxt[ok, 1], v)
+    beyond = (ci == 0) | (ci == h.size) | (cj == 0) | (cj == v.size)
+    nodes_in = []
+    for a, b in zip(ci[~beyond], cj[~beyond], strict=True):
+        nodes_in.append(int(ref.kernel[a - 1 : a + 1, b - 1 : b + 1].sum()))
+    dh, dv = h[1] - h[0], v[1] - v[0]
+    gap = np.abs(vs.next_state[fv] - ref.next_state[fv])[ok] / np.array([dh, dv])
+    return {
+        "pairs": int(fv.sum()),
+        "states": len(states),
+        "states_on_exact_kernel_border": int(sum(bool(border[s]) for s in states)),
+        "states_in_exact_kernel": int(sum(bool(ref.kernel[s]) for s in states)),
+        "exact_step_fails": int((~ok).sum()),
+        "exact_next_beyond_grid": int(beyond.sum()),
+        "exact_next_cell_kernel_nodes": {str(k): nodes_in.count(k) for k in range(5) if nodes_in.count(k)},
+        "next_state_gap_cells_median": [float(x) for x in np.median(gap, axis=0)] if gap.size else None,
+        "next_state_gap_cells_max": [float(x) for x in gap.max(axis=0)] if gap.size else None,
+        "k_d": {f"{k:g}": int((idx[:, 3] == i).sum()) for i, k in enumerate(ref.actions["k_d"])},
+    }
+
+
+#: ``iterative``'s options measured by part ``iterative2d`` (the first is the default).
+ITERATIVE_VARIANTS = (
+    {},
+    {"nodes": "6"},
+    {"iterations": 8},
+    {"iterations": 10},
+    {"iterations": 20},
+    {"nodes": "6", "iterations": 10},
+    {"nodes": "6", "iterations": 20},
+    {"nodes": "6", "iterations": 40},
+)
+
+
+def part_iterative2d(n: int) -> dict:
+    """``iterative``'s options against the exact map on the ``maps2d`` grid (k_d free)."""
+    grid = _grid2d(n)
+    ref = slipmaps.viability("exact", VIBLY, **grid)
+    out = {
+        "exact": {
+            "kernel_states": int(ref.kernel.sum()),
+            "viable_pairs": int(ref.viable.sum()),
+            "seconds_map": ref.seconds["map"],
+            "ns_per_step": 1e9 * ref.seconds["map"] / ref.failed.size,
+        }
+    }
+    for options in ITERATIVE_VARIANTS:
+        label = "iterative " + (" ".join(f"{k}={v}" for k, v in options.items()) or "(default)")
+        slipmaps.viability("iterative", VIBLY, **{**grid, "k_d": grid["k_d"][:1]}, **options)  # compile
+        best = None
+        for _ in range(2):
+            vs = slipmaps.viability("iterative", VIBLY, **grid, **options)
+            best = vs.seconds["map"] if best is None else min(best, vs.seconds["map"])
+        out[label] = {
+            "seconds_map": best,
+            "ns_per_step": 1e9 * best / vs.failed.size,
+            **_compare(vs, ref),
+            "where": _where_false_viable(vs, ref),
+        }
+        print(label, json.dumps(out[label]), flush=True)
     return out
 
 
@@ -299,6 +392,59 @@ def part_retraction() -> dict:
     return out
 
 
+def part_retraction2d(n: int) -> dict:
+    """Retraction with k_d on vibly's (height, speed) grid: per set of actions and ``outside`` rule the
+    kernel, the states with a step that does not fail, the mean over the kernel of the share of
+    touchdown angles for which some choice of the other actions is viable, and of the measure (the
+    share of all action tuples that are viable)."""
+    heights, speeds = np.linspace(0.5, 2.4, n), np.linspace(0.5, 7.0, n)
+    angles = np.radians(np.linspace(-10.0, 70.0, 2 * n + 1))
+    k_d = np.linspace(4100.0, 16400.0, 5)
+    rates = np.linspace(-3.0, 0.0, 5)
+    cases = {
+        "angle": {},
+        "angle, k_d": {"k_d": k_d},
+        "angle, rate": {"retraction_rate": rates},
+        "angle, k_d, rate": {"k_d": k_d, "retraction_rate": rates},
+    }
+    out = {
+        "grid": {"n": n, "angles": angles.size, "k_d": k_d.tolist(), "rates": rates.tolist()},
+        "cases": {},
+    }
+    for outside in ("fail", "edge"):
+        for label, actions in cases.items():
+            vs = slipmaps.viability(
+                "exact",
+                VIBLY,
+                apex_height=heights,
+                apex_speed=speeds,
+                touchdown_angle=angles,
+                outside=outside,
+                **actions,
+            )
+            extra = tuple(range(3, vs.viable.ndim))
+            angle_ok = vs.viable.any(axis=extra) if extra else vs.viable
+            safe = (~vs.failed).any(axis=tuple(range(2, vs.failed.ndim)))
+            share = angle_ok.mean(axis=2)
+            row = {
+                "pairs": int(vs.failed.size),
+                "kernel_states": int(vs.kernel.sum()),
+                "states_with_a_safe_step": int(safe.sum()),
+                "mean_angle_share_in_kernel": float(share[vs.kernel].mean()) if vs.kernel.any() else 0.0,
+                "max_angle_share": float(share.max()),
+                "mean_measure_in_kernel": float(vs.measure[vs.kernel].mean()) if vs.kernel.any() else 0.0,
+                "rounds": vs.rounds,
+                "seconds": vs.seconds["map"] + vs.seconds["kernel"],
+            }
+            if "retraction_rate" in actions:
+                per_rate = vs.viable.sum(axis=tuple(range(vs.viable.ndim - 1)))
+                counts = zip(rates, per_rate, strict=True)
+                row["viable_pairs_per_rate"] = {f"{r:g}": int(c) for r, c in counts}
+            out["cases"][f"{label} ({outside})"] = row
+            print(label, outside, json.dumps(row), flush=True)
+    return out
+
+
 def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
     heights = np.linspace(0.5, 2.4, n)
     speeds = np.linspace(0.5, 7.0, n)
@@ -326,9 +472,8 @@ def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument(
-        "--part", action="append", choices=("vibly", "maps", "maps2d", "stiffness", "retraction", "scale")
-    )
+    parts = ("vibly", "maps", "maps2d", "iterative2d", "stiffness", "retraction", "retraction2d", "scale")
+    ap.add_argument("--part", action="append", choices=parts)
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--n", type=int, default=30, help="points per axis (stiffness, scale)")
     ap.add_argument("--scale-map", default="exact")
@@ -346,8 +491,12 @@ def main() -> None:
             out["maps"] = part_maps(args.figure)
         elif part == "maps2d":
             out["maps2d"] = part_maps2d(args.n)
+        elif part == "iterative2d":
+            out["iterative2d"] = part_iterative2d(args.n)
         elif part == "retraction":
             out["retraction"] = part_retraction()
+        elif part == "retraction2d":
+            out["retraction2d"] = part_retraction2d(args.n)
         elif part == "stiffness":
             out["stiffness"] = part_stiffness(args.n, not args.no_levels)
         else:

@@ -3,7 +3,9 @@
 A slice of every claim is re-measured against the committed docs/reproductions.json (to its 6
 digits: tests/records.py): Geyer et al.'s stances at one stiffness of each setting, the Yu protocol
 at one angle of attack, Seyfarth et al.'s fixed points and return map of the exact and Geyer et
-al.'s maps, the notebook's stiffness scan of the exact map with its bisected ranges. Every verdict
+al.'s maps, the notebook's stiffness scan of the exact map with its bisected ranges, Heim and
+Spröwitz's viable set on vibly's SLIP grid (whose published numbers are checked against vibly's
+arrays, tests/data/vibly_slip_map.npz). Every verdict
 of the record follows from its numbers by the rules of runtime/studies/reproductions.py, and the
 committed docs/reproductions.md is the rendering of the record. A few seconds once compiled.
 """
@@ -15,16 +17,19 @@ import math
 from dataclasses import replace
 from pathlib import Path
 
+import numpy as np
 import pytest
 from records import assert_close
 from slipmaps.runtime.api.index import EXACT
 from slipmaps.runtime.studies import reproductions as rp
 from slipmaps.runtime.studies import reproductions_gaits as gaits
 from slipmaps.runtime.studies import reproductions_stance as stance
+from slipmaps.runtime.studies import reproductions_viability as heim
 from slipmaps.runtime.studies import study as pipeline
 from slipmaps.runtime.studies.reproductions_report import render_markdown
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
+DATA = Path(__file__).resolve().parent / "data"
 
 
 @pytest.fixture(scope="module")
@@ -87,6 +92,48 @@ def test_drake_exact_scan_and_stiffness_ranges_are_current(record):
     assert_close(measured["subjects"][EXACT], record["drake"]["subjects"][EXACT], "drake.exact")
 
 
+def test_heim_published_numbers_are_vibly_arrays():
+    """The paper's numbers of the claim are those of vibly's published arrays (sheim/vibly's
+    tests/integration/data/slip_map.npz), on the demo's grids."""
+    ref = np.load(DATA / "vibly_slip_map.npz")
+    _, s, _, angles = heim.vibly_grid()
+    assert np.array_equal(ref["s_grid"], s) and np.array_equal(ref["a_grid"], angles)
+    peak = int(np.argmax(ref["S_M"]))
+    published = {
+        "pairs": int(ref["Q_F"].size),
+        "failed_pairs": int(ref["Q_F"].sum()),
+        "viable_pairs": int(ref["Q_V"].sum()),
+        "kernel_states": int((ref["S_M"] > 0).sum()),
+        "measure_max": float(ref["S_M"][peak]),
+        "measure_max_s": float(s[peak]),
+        "measure_top": float(ref["S_M"][-1]),
+        "failed_fingerprint": heim.fingerprint(ref["Q_F"]),
+        "viable_fingerprint": heim.fingerprint(ref["Q_V"]),
+    }
+    assert _as_written(published) == heim.VIBLY
+    # the fingerprint tells one pair apart
+    flipped = ref["Q_V"].copy()
+    flipped[90, 80] = not flipped[90, 80]
+    assert heim.fingerprint(flipped) != heim.VIBLY["viable_fingerprint"]
+
+
+def test_heim_viable_set_is_current(record):
+    """vibly's SLIP grid on the exact map, both rules for the grid's border, against the record."""
+    measured = _as_written(heim.measure_heim(show_progress=False))
+    recorded = {k: v for k, v in record["heim"].items() if k != "verdict"}
+    assert_close(measured, recorded, "heim")
+    assert rp.heim_verdict(measured) == rp.HOLDS
+
+
+def test_heim_verdict_refuses_a_record_that_contradicts_vibly(record):
+    """One viable pair more (another fingerprint and count), or a lower peak of the measure: the
+    claim does not hold."""
+    for key, value in (("viable_fingerprint", "0" * 16), ("viable_pairs", 5067), ("measure_max", 0.28)):
+        changed = copy.deepcopy(record["heim"])
+        changed["ours"][key] = value
+        assert rp.heim_verdict(changed) == rp.FAILS, key
+
+
 def test_every_verdict_follows_from_its_numbers(record):
     """The verdicts and the numbers they are read from, recomputed from the record's other numbers
     by the same rules, are the recorded ones; every verdict is one of the three words."""
@@ -95,12 +142,13 @@ def test_every_verdict_follows_from_its_numbers(record):
         del s["summary"]
     for m in stripped["yu"]["maps"]:
         del m["verdict"], m["holds_at_attack_deg"]
-    del stripped["seyfarth"]["verdicts"], stripped["drake"]["verdicts"]
+    del stripped["seyfarth"]["verdicts"], stripped["drake"]["verdicts"], stripped["heim"]["verdict"]
     assert rp.add_verdicts(stripped) == record
     verdicts = [s["summary"]["verdict"] for s in record["geyer"]["settings"]]
     verdicts += [m["verdict"] for m in record["yu"]["maps"]]
     verdicts += [*record["seyfarth"]["verdicts"].values(), *record["drake"]["verdicts"].values()]
-    assert len(verdicts) == 2 + len(record["yu"]["maps"]) + 2 * len(record["drake"]["subjects"])
+    verdicts += [record["heim"]["verdict"]]
+    assert len(verdicts) == 3 + len(record["yu"]["maps"]) + 2 * len(record["drake"]["subjects"])
     assert set(verdicts) <= set(rp.VERDICTS)
 
 

@@ -6,13 +6,14 @@ holds the study, ``reproductions`` of ``slipmaps accuracy``).
 The claims: Geyer, Seyfarth and Blickhan 2005 (the approximate stance within 1 % of the leg
 compression and 0.6 deg of the leg angle), Yu, Li and Cai 2012 (next-apex error mean < 5 %, max
 < 15 %), Seyfarth et al. 2002 / 2003 (a stable fixed point at 68 deg and 5 m/s), Tedrake's
-Underactuated Robotics SLIP notebook (no fixed point at k l0/(m g) = 10.8). SI units, angles as in
+Underactuated Robotics SLIP notebook (no fixed point at k l0/(m g) = 10.8), Heim and Spröwitz 2019
+(vibly's SLIP viable set, :mod:`.reproductions_viability`). SI units, angles as in
 docs/conventions.md.
 
 A verdict is one of :data:`VERDICTS`, computed by :func:`add_verdicts` from the record as its JSON
 file holds it (6 significant digits; :func:`measure` rounds first), so the verdicts follow from the
-recorded numbers by the rules of :func:`geyer_summary`, :func:`yu_verdict`, :func:`stable_verdict`
-and :func:`drake_verdict`, and the tests recompute them from the file.
+recorded numbers by the rules of :func:`geyer_summary`, :func:`yu_verdict`, :func:`stable_verdict`,
+:func:`drake_verdict` and :func:`heim_verdict`, and the tests recompute them from the file.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from . import study as pipeline
 from .report_format import rounded
 from .reproductions_gaits import DRAKE, measure_drake, measure_seyfarth
 from .reproductions_stance import GEYER_COLUMNS, GEYER_DOMAIN, GEYER_TOL, YU_TARGET, measure_geyer, measure_yu
+from .reproductions_viability import measure_heim
 
 __all__ = [
     "VERDICTS",
@@ -31,7 +33,10 @@ __all__ = [
     "yu_verdict",
     "stable_verdict",
     "drake_verdict",
+    "heim_verdict",
+    "HEIM_KEYS",
     "add_verdicts",
+    "CLAIMS",
     "measure",
     "from_json",
 ]
@@ -112,6 +117,26 @@ def drake_verdict(at: dict) -> str:
     return HOLDS if at[str(DRAKE["kappa"])] and not at[str(DRAKE["kappa_figure"])] else FAILS
 
 
+#: The numbers of vibly's published arrays a reproduction of Heim and Spröwitz's viable set must equal.
+HEIM_KEYS = (
+    "pairs",
+    "failed_pairs",
+    "viable_pairs",
+    "kernel_states",
+    "measure_max",
+    "measure_max_s",
+    "measure_top",
+    "failed_fingerprint",
+    "viable_fingerprint",
+)
+
+
+def heim_verdict(heim: dict) -> str:
+    """ "holds" when every number of :data:`HEIM_KEYS` of ``heim["ours"]`` equals the paper's (the
+    fingerprints: Q_F and Q_V pair for pair), else "does not hold"."""
+    return HOLDS if all(heim["ours"][k] == heim["paper"][k] for k in HEIM_KEYS) else FAILS
+
+
 def add_verdicts(record: dict) -> dict:
     """Each claim's verdicts (and the numbers they are read from), computed from ``record``'s numbers."""
     for s in record["geyer"]["settings"]:
@@ -122,20 +147,34 @@ def add_verdicts(record: dict) -> dict:
         n: stable_verdict(p) for n, p in record["seyfarth"]["fixed_points"].items()
     }
     record["drake"]["verdicts"] = {n: drake_verdict(s["at"]) for n, s in record["drake"]["subjects"].items()}
+    record["heim"]["verdict"] = heim_verdict(record["heim"])
     return record
 
 
-def measure(show_progress: bool | None = None) -> dict:
-    """The record: each claim measured, rounded as its JSON file holds it, with its verdicts."""
-    raw = {
-        "geyer": measure_geyer(show_progress),
-        "yu": measure_yu(show_progress),
-        "seyfarth": measure_seyfarth(show_progress),
-        "drake": measure_drake(show_progress),
-    }
+#: Each claim's key in the record and the function that measures it, in claim order.
+CLAIMS = {
+    "geyer": measure_geyer,
+    "yu": measure_yu,
+    "seyfarth": measure_seyfarth,
+    "drake": measure_drake,
+    "heim": measure_heim,
+}
+
+
+def measure(show_progress: bool | None = None, claims=None, record: dict | None = None) -> dict:
+    """The record: each claim measured, rounded as its JSON file holds it, with its verdicts. With
+    ``claims`` (keys of :data:`CLAIMS`) only those are measured, the others taken from ``record`` (a
+    record as its file holds it, e.g. the committed docs/reproductions.json)."""
+    names = list(CLAIMS) if claims is None else list(claims)
+    unknown = [n for n in names if n not in CLAIMS]
+    if unknown:
+        raise ValueError(f"unknown claims {unknown}: choose from {list(CLAIMS)}")
+    if len(names) < len(CLAIMS) and record is None:
+        raise ValueError("measuring some claims needs the record of the others")
+    raw = {n: (CLAIMS[n](show_progress) if n in names else record[n]) for n in CLAIMS}
     return add_verdicts(rounded(raw))
 
 
 def from_json(text: str) -> dict:
-    """The record of docs/reproductions.json: ``geyer``, ``yu``, ``seyfarth``, ``drake``."""
+    """The record of docs/reproductions.json: ``geyer``, ``yu``, ``seyfarth``, ``drake``, ``heim``."""
     return pipeline.from_json(text)
