@@ -61,10 +61,12 @@ def pytest_sessionstart(session: pytest.Session) -> None:
 
 
 @pytest.fixture(scope="session")
-def c_export(tmp_path_factory):
+def c_export(tmp_path_factory, request):
     """The C target's library (``slipmaps generate --target c``) in a directory of this session,
     each source compiled once with the export's strict flags into an object (``slipmaps.o``,
-    ``slipmaps_deadbeat.o``) that the C tests link into their libraries. Skips without a compiler."""
+    ``slipmaps_deadbeat.o``, ``slipmaps_swing.o``) that the C tests link into their libraries.
+    Built once for the whole run: the xdist workers share it (the first builds it under a file
+    lock). Skips without a compiler."""
     import subprocess
 
     from slipmaps.runtime.export.clib import STRICT, compiler
@@ -74,11 +76,23 @@ def c_export(tmp_path_factory):
         pytest.skip("no C compiler (set CC, or install gcc or clang)")
     from slipmaps.derive import ctarget
 
-    out = tmp_path_factory.mktemp("c_export")
-    ctarget.write(out)
-    procs = [
-        subprocess.Popen([cc, *STRICT, "-fPIC", "-c", src, "-o", src.replace(".c", ".o")], cwd=out)
-        for src in ctarget.SOURCES
-    ]
-    assert all(p.wait() == 0 for p in procs), "the exported C does not compile warning-free"
+    base = tmp_path_factory.getbasetemp()
+    root = base.parent if hasattr(request.config, "workerinput") else base
+    out = root / "c_export"
+    with open(root / "c_export.lock", "w") as lock:
+        try:
+            import fcntl
+
+            fcntl.flock(lock, fcntl.LOCK_EX)
+        except ImportError:  # no POSIX locks: each worker builds its own copy
+            out = base / "c_export"
+        if not (out / ".built").exists():
+            out.mkdir(exist_ok=True)
+            ctarget.write(out)
+            procs = [
+                subprocess.Popen([cc, *STRICT, "-fPIC", "-c", src, "-o", src.replace(".c", ".o")], cwd=out)
+                for src in ctarget.SOURCES
+            ]
+            assert all(p.wait() == 0 for p in procs), "the exported C does not compile warning-free"
+            (out / ".built").touch()
     return out

@@ -112,12 +112,13 @@ double harness_time_map(slipmaps_role_fn f, const double *x, const double *p, do
 
 
 @pytest.fixture(scope="module")
-def lib(c_export):
+def lib(c_export, tmp_path_factory):
     """The exported maps and solver (tests/conftest.py's ``c_export``) with the harness."""
-    (c_export / "harness.c").write_text(HARNESS)
-    so = c_export / "libdeadbeat.so"
+    own = tmp_path_factory.mktemp("c_deadbeat")
+    (own / "harness.c").write_text(HARNESS)
+    so = own / "libdeadbeat.so"
     objects = [c_export / "slipmaps.o", c_export / "slipmaps_deadbeat.o"]
-    compile_library([*objects, c_export / "harness.c"], so, extra=["-I", str(c_export)])
+    compile_library([*objects, own / "harness.c"], so, extra=["-I", str(c_export)])
     lib = deadbeat_c.bind(ctypes.CDLL(str(so)))
     lib.harness_time.restype = ctypes.c_double
     _LIB["lib"] = lib

@@ -76,8 +76,9 @@ def close(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 @pytest.fixture(scope="module")
-def clib(c_export):
-    return CLibrary(compile_library([c_export / "slipmaps.o"], c_export / "libmaps.so"))
+def clib(c_export, tmp_path_factory):
+    so = tmp_path_factory.mktemp("maps") / "libmaps.so"
+    return CLibrary(compile_library([c_export / "slipmaps.o"], so))
 
 
 def cases():

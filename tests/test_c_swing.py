@@ -100,14 +100,15 @@ double harness_time_touchdown(int which, double g, double q, const double *t, in
 
 
 @pytest.fixture(scope="module")
-def lib(c_export):
+def lib(c_export, tmp_path_factory):
     """The exported swing evaluation (tests/conftest.py's ``c_export``: rendered by
     ``slipmaps generate --target c`` and compiled with the export's strict flags) built with the
     harness into a library."""
-    (c_export / "swing_harness.c").write_text(HARNESS)
+    own = tmp_path_factory.mktemp("c_swing")
+    (own / "swing_harness.c").write_text(HARNESS)
     so = compile_library(
-        [c_export / "slipmaps_swing.o", c_export / "swing_harness.c"],
-        c_export / "libswing.so",
+        [c_export / "slipmaps_swing.o", own / "swing_harness.c"],
+        own / "libswing.so",
         extra=["-I", str(c_export)],
     )
     return swing_c.bind(ctypes.CDLL(str(so)))
