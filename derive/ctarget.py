@@ -33,7 +33,7 @@ from pathlib import Path
 from .cexpr import C_RESERVED, CPrintError, cexpr, cstatements
 from .ir import MAX_NODES, Kernel, calls
 from .lower import abi, lower
-from .render import render
+from .render import render, template
 from .status import STATUS_CODES
 
 #: What the C library's files are called in the output directory: the maps, the deadbeat solver.
@@ -341,8 +341,6 @@ class _Kernel:
             "returns": self.returns(),
             "params": params,
             "param_names": sorted(names),
-            # (void) on every local too: the lowering keeps values some choices do not read (the
-            # numba target's compiler drops them silently, C warns)
             "locals": ints + doubles + [a.split("[")[0] for a in arrays] + list(self.pointers),
             "ints": ints,
             "doubles": doubles,
@@ -376,6 +374,23 @@ class _Kernel:
         elif self.kind in ("tuple", "tuple_status"):
             ps.append("double *_r")
         return ", ".join(ps) or "void"
+
+
+_WRITE = re.compile(r"^\s*([A-Za-z_]\w*)(\[[^=]*\])?\s*\+?=(?!=)")
+
+
+def _unread(function: str, names) -> list[str]:
+    """The ``names`` a rendered C function body never reads (only assigns, or never mentions): the
+    lowering keeps values some options do not use, which numba drops silently and a C compiler
+    warns about (``-Wunused-but-set-variable``); the template casts exactly these to void."""
+    reads: set[str] = set()
+    for line in function.splitlines():
+        m = _WRITE.match(line)
+        text = line
+        if m:  # the target is written, its indices and the right-hand side read
+            text = (m.group(2) or "") + line[m.end() :]
+        reads.update(re.findall(r"[A-Za-z_]\w*", text))
+    return [n for n in names if n not in reads]
 
 
 def _split_args(text: str) -> list[str]:
@@ -461,6 +476,11 @@ def build(modules) -> dict[str, str]:
             functions.append(_Kernel(k, data, kinds).render_data())
         except CPrintError as exc:
             raise CPrintError(f"kernel {k.name}: {exc}") from exc
+    # each function's body rendered alone (the template's own macro), to find what it never reads
+    empty = {"functions": [], "roles": [], "tables": [], "statuses": [], "max_nodes": MAX_NODES}
+    body = template("c/kernels.c.j2").make_module({"helpers": (), **empty}).body
+    for f in functions:
+        f["unread"] = _unread(str(body(f)), f["param_names"] + f["locals"])
     # the parameter records: one struct per distinct p layout, named after the first role of a
     # module that takes it (a map's roles share one)
     # each map's options at their defaults, as kernel arguments (a choice's code): the header says them

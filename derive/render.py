@@ -22,6 +22,11 @@ def _environment() -> jinja2.Environment:
     )
 
 
+def template(template_name: str) -> jinja2.Template:
+    """The template ``templates/<template_name>`` (its macros: ``template(name).module.<macro>``)."""
+    return _environment().get_template(template_name)
+
+
 def render(template_name: str, **data) -> str:
     """Render ``templates/<template_name>`` with ``data``."""
     return _environment().get_template(template_name).render(**data)
