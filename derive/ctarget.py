@@ -32,7 +32,7 @@ from pathlib import Path
 
 from .cexpr import C_RESERVED, CPrintError, cexpr, cstatements
 from .ir import MAX_NODES, Kernel, calls
-from .lower import abi, lower
+from .lower import abi, filled, lower
 from .render import render, template
 from .status import STATUS_CODES
 
@@ -421,18 +421,15 @@ def _kind(kernel: Kernel) -> str:
     return "value" if n == 1 else "tuple"
 
 
-def _table(values, shape: str) -> str:
+def _table(values) -> str:
+    """A lookup table's C initializer, by code (NaN where a code has no table)."""
+
     def fmt(v) -> str:
         if isinstance(v, list):
             return "{" + ", ".join(fmt(x) for x in v) + "}"
         return "NAN" if v != v else cexpr(repr(float(v)))
 
-    first = next(v for v in values if v is not None)
-
-    def nan_like(x):
-        return [nan_like(e) for e in x] if isinstance(x, list) else float("nan")
-
-    return "{" + ", ".join(fmt(v if v is not None else nan_like(first)) for v in values) + "}"
+    return "{" + ", ".join(fmt(v) for v in filled(values)) + "}"
 
 
 def _shape(values) -> str:
@@ -470,7 +467,7 @@ def build(modules) -> dict[str, str]:
             shape = _shape(values)
             shapes[name] = shape
             dims = {"scalar": "", "vector": f"[{MAX_NODES}]", "matrix": f"[{MAX_NODES}][{MAX_NODES}]"}[shape]
-            tables[name] = (f"[{len(values)}]{dims}", _table(values, shape), shape)
+            tables[name] = (f"[{len(values)}]{dims}", _table(values), shape)
         data["_table_shapes"] = shapes
         try:
             functions.append(_Kernel(k, data, kinds).render_data())

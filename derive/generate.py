@@ -19,7 +19,6 @@ from __future__ import annotations
 import difflib
 import hashlib
 import json
-import math
 from pathlib import Path
 
 import jinja2
@@ -28,7 +27,7 @@ import sympy as sp
 from . import docs, numerics
 from .equations import entries, render_equation_record, render_equation_summary, render_equation_table
 from .ir import Module, calls
-from .lower import SUPPORT_MODULE, lower
+from .lower import SUPPORT_MODULE, filled, lower
 from .maps import all_halves, all_maps, ground_truth
 from .maps import family_pages as all_family_pages
 from .mapspec import MapSpec
@@ -224,13 +223,7 @@ def _table_code(values: list) -> str:
             return "[" + ", ".join(fmt(x) for x in v) + "]"
         return "NAN" if v != v else repr(float(v))
 
-    shape = next(v for v in values if v is not None)
-    blank = json.loads(json.dumps(shape).replace("NaN", "null"))  # the shape, every entry None
-
-    def nan_like(x):
-        return [nan_like(e) for e in x] if isinstance(x, list) else math.nan
-
-    rows = [fmt(v if v is not None else nan_like(blank)) for v in values]
+    rows = [fmt(v) for v in filled(values)]
     return "np.array([" + ", ".join(rows) + "])"
 
 

@@ -578,6 +578,17 @@ def _padded(values, code: int, shape: str):
     return rows + [[math.nan] * MAX_NODES] * (MAX_NODES - len(rows))
 
 
+def filled(values: list) -> list:
+    """A lookup table's values by code (:func:`lower`'s ``tables``) with every code that has no table
+    (None) as NaN in the tables' shape: what each target writes as the module constant."""
+    first = next(v for v in values if v is not None)
+
+    def nan_like(x):
+        return [nan_like(e) for e in x] if isinstance(x, list) else math.nan
+
+    return [v if v is not None else nan_like(first) for v in values]
+
+
 def _lower_lookup(ctx: _Ctx, lk: Lookup, idx: str) -> list[dict]:
     where = f"step {idx} (lookup on {to_code(lk.selector)})"
     ctx.require(lk.selector, where)
