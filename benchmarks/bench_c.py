@@ -19,7 +19,6 @@ import argparse
 import json
 import sys
 import tempfile
-import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
@@ -29,7 +28,7 @@ from slipmaps.runtime.api.calls import Call
 from slipmaps.runtime.export.clib import STRICT, CLibrary, compile_library, compiler
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_maps import machine  # noqa: E402
+from bench_maps import best_of, machine  # noqa: E402
 
 #: The apex return's target: C per state over numba per state.
 TARGET_RATIO = 1.2
@@ -60,13 +59,9 @@ def build(out: Path) -> dict[str, CLibrary]:
 
 
 def _best(f, repeat: int) -> float:
+    """bench_maps' best of ``repeat``, after one call that warms caches and compiles."""
     f()
-    best = np.inf
-    for _ in range(repeat):
-        t = time.perf_counter()
-        f()
-        best = min(best, time.perf_counter() - t)
-    return best
+    return best_of(f, repeat)
 
 
 def _side_by_side(libs: dict[str, CLibrary], spec, X, P, repeat: int) -> dict:
