@@ -166,13 +166,18 @@ def _heim_same(h: dict) -> str:
 # ----------------------------------------------------------------------------------------------
 # The sections
 # ----------------------------------------------------------------------------------------------
+
+
+def _head(heading: str, sources: list) -> list[str]:
+    """A claim's section heading and its source line ("Source:" for one, "Sources:" for several)."""
+    label = "Source" if len(sources) == 1 else "Sources"
+    return [f"## {heading}", "", f"{label}: " + "; ".join(_title(s) for s in sources) + ".", ""]
+
+
 def _geyer_section(g: dict) -> list[str]:
     tol, dom = g["paper"]["tolerance"], g["paper"]["domain"]
     out = [
-        f"## 1. {_cite(g['source'])}: the approximate stance within 1 % and 0.6 deg",
-        "",
-        f"Source: {_title(g['source'])}.",
-        "",
+        *_head(f"1. {_cite(g['source'])}: the approximate stance within 1 % and 0.6 deg", [g["source"]]),
         f"Claim (abstract): {g['claim']}.",
         "",
         _paragraph(
@@ -211,10 +216,7 @@ def _yu_section(y: dict) -> list[str]:
     failed = sum(y["exact_failures"].values())
     kept = "" if y["exact_ok"] + failed == y["states"] else " (MISMATCH: the counts do not add up)"
     out = [
-        f"## 2. {_cite(y['source'])}: the gravity-corrected next apex",
-        "",
-        f"Source: {_title(y['source'])}.",
-        "",
+        *_head(f"2. {_cite(y['source'])}: the gravity-corrected next apex", [y["source"]]),
         f"Claim: {y['claim']}.",
         "",
         _paragraph(
@@ -244,10 +246,7 @@ def _yu_section(y: dict) -> list[str]:
 def _seyfarth_section(s3: dict) -> list[str]:
     st = s3["setting"]
     out = [
-        f"## 3. {_cite(s3['source'])}: a stable fixed point at 68 deg",
-        "",
-        "Sources: " + "; ".join(_title(s) for s in s3["source"]) + ".",
-        "",
+        *_head(f"3. {_cite(s3['source'])}: a stable fixed point at 68 deg", s3["source"]),
         f"Claim: {s3['claim']}.",
         "",
         _paragraph(
@@ -271,10 +270,7 @@ def _drake_section(d: dict) -> list[str]:
     k7, k8 = str(d["paper"]["kappa"]), str(d["paper"]["kappa_figure"])
     ks = d["setting"]["kappas"]
     out = [
-        f"## 4. {_cite(d['source'])}: no fixed point at k l0/(m g) = {k8}",
-        "",
-        f"Source: {_title(d['source'])}.",
-        "",
+        *_head(f"4. {_cite(d['source'])}: no fixed point at k l0/(m g) = {k8}", [d["source"]]),
         f"Claim (the notebook's comments): {d['claim']}.",
         "",
         _paragraph(
@@ -310,10 +306,7 @@ def _heim_section(h: dict) -> list[str]:
     first = next(i for i, x in enumerate(m) if x > 0)
     w = sh["width_deg"]
     out = [
-        f"## 5. {_cite(h['source'][0])}: the SLIP's viable set",
-        "",
-        "Sources: " + "; ".join(_title(s) for s in h["source"]) + ".",
-        "",
+        *_head(f"5. {_cite(h['source'][0])}: the SLIP's viable set", h["source"]),
         f"Claim: {h['claim']}.",
         "",
         _paragraph(
