@@ -96,6 +96,44 @@ def test_stance_batch_rows_equal_scalar_calls_and_bad_rows_get_their_own_status(
     assert res.counts() == {"OK": 2, "INVALID_INPUT": 2}
 
 
+@pytest.mark.parametrize("name", GENERATED)
+@pytest.mark.parametrize("role", ["stance", "stance_jacobian"])
+def test_a_record_field_that_is_also_an_input_is_read_from_the_input(name, role):
+    """The stance's parameter record holds the touchdown leg length q_r_td, which is also its
+    first input: the batch driver fills the record once for every row (calls.layout_rows), so the
+    role kernel must read q_r_td from x. The record's copy NaN: the same outputs, bit for bit."""
+    from slipmaps.runtime.api.batch import run_rows
+    from slipmaps.runtime.api.calls import Call, kernel_functions
+
+    call = Call.of(name, P, {})
+    spec = call.spec(role)
+    shadowed = [j for j, f in enumerate(spec.p) if f in spec.x]
+    assert [spec.p[j] for j in shadowed] == ["q_r_td"], spec.p
+    rng = np.random.default_rng(7)
+    n = 64
+    X = np.column_stack(
+        [
+            rng.uniform(0.9, 1.0, n),
+            rng.uniform(-2.0, -1.0, n),
+            rng.uniform(0.25, 0.4, n),
+            rng.uniform(-5.5, -3.5, n),
+        ]
+    )
+    rows = kernel_functions(spec)[1]
+    outs = []
+    for fill in (None, math.nan):
+        record = call.record(spec).copy()[None, :]
+        if fill is not None:
+            record[0, shadowed] = fill
+        out, status = np.empty((n, spec.width)), np.empty(n, dtype=np.int64)
+        run_rows(rows, X, record, out, status)
+        outs.append((out, status))
+    (a, sa), (b, sb) = outs
+    assert (sa == int(Status.OK)).sum() >= n // 2, np.unique(sa, return_counts=True)
+    np.testing.assert_array_equal(sa, sb)
+    np.testing.assert_array_equal(a, b)
+
+
 def test_apex_return_batch_broadcasts_and_keeps_the_shape():
     speeds = np.array([3.0, 4.0, 5.0])
     angles = np.array([[0.30], [0.35]])

@@ -80,14 +80,30 @@ class KernelBackend:
         return out, status
 
 
+class Columns(dict):
+    """Per-row inputs that are the columns of one (n, k) float64 ``matrix``, in the order of
+    ``names``: a dict of column views by name, whose matrix :func:`layout_rows` hands as it is to a
+    role kernel whose inputs ``x`` are those names in that order (a batch of stance states)."""
+
+    def __init__(self, matrix: np.ndarray, names) -> None:
+        self.names = tuple(names)
+        super().__init__((a, matrix[:, j]) for j, a in enumerate(self.names))
+        self.matrix = matrix
+
+
 def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int):
     """``(X, P)`` of ``n`` rows of a role kernel: ``X`` (n, len(x)) its inputs by name from the
     per-row arrays ``rows`` or the per-call ``inputs``; ``P`` the parameter ``record`` (1, k), or
-    one per row (n, k) when ``rows`` also holds a parameter (a plant's stiffness per run)."""
-    X = np.empty((n, len(spec.x)))
-    for j, a in enumerate(spec.x):
-        X[:, j] = rows[a] if a in rows else inputs[a]
-    varying = [(j, f) for j, f in enumerate(spec.p) if f in rows]
+    one per row (n, k) when ``rows`` also holds a parameter (a plant's stiffness per run). A record
+    field that is also an input (the stance's touchdown leg length ``q_r_td``) is not one: a role
+    kernel reads it from ``x`` (derive/lower.py unpacks from ``p`` only the names ``x`` lacks)."""
+    if isinstance(rows, Columns) and rows.names == tuple(spec.x):
+        X = np.ascontiguousarray(rows.matrix, dtype=np.float64)  # read only by the kernel
+    else:
+        X = np.empty((n, len(spec.x)))
+        for j, a in enumerate(spec.x):
+            X[:, j] = rows[a] if a in rows else inputs[a]
+    varying = [(j, f) for j, f in enumerate(spec.p) if f in rows and f not in spec.x]
     if not varying:
         return X, record[None, :]
     P = np.repeat(record[None, :], n, axis=0)

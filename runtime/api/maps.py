@@ -34,7 +34,7 @@ import numpy as np
 from slipmaps.derive import params as _table
 from slipmaps.generated.status import MESSAGES, Status
 
-from .calls import Call
+from .calls import Call, Columns
 from .index import maps
 from .inputs import apex_signature
 from .params import SlipParams
@@ -111,12 +111,6 @@ def state_rows(params: SlipParams, states, what: str = "touchdowns") -> np.ndarr
     return arr
 
 
-def _columns(arr: np.ndarray, names) -> dict[str, np.ndarray]:
-    """The columns of (n, k) ``arr`` as C-contiguous float64 arrays by ``names`` (one compiled
-    specialisation of each batch kernel: a strided or broadcast view would compile another)."""
-    return {n: np.ascontiguousarray(arr[:, j], dtype=np.float64) for j, n in enumerate(names)}
-
-
 def stance_batch(
     name: str, params: SlipParams, touchdowns, *, progress: bool | None = None, **options
 ) -> BatchResult:
@@ -124,7 +118,7 @@ def stance_batch(
     call = Call.of(name, params, options)
     arr = state_rows(params, touchdowns)
     n = arr.shape[0]
-    out, status = call.rows("stance", _columns(arr, call.spec("stance").x), {}, n, progress)
+    out, status = call.rows("stance", Columns(arr, call.spec("stance").x), {}, n, progress)
     return BatchResult(call.info.name, "stance", call.spec("stance").outputs, out, status, (n,))
 
 
@@ -198,5 +192,5 @@ def half_stance_batch(name: str, params: SlipParams, states, **options) -> Batch
     call = Call.of(name, params, options, half=True)
     arr = state_rows(params, states, "states")
     n = arr.shape[0]
-    out, status = call.rows("half", _columns(arr, call.spec("half").x), {}, n)
+    out, status = call.rows("half", Columns(arr, call.spec("half").x), {}, n)
     return BatchResult(call.info.name, "half", call.spec("half").outputs, out, status, (n,))
