@@ -60,6 +60,29 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     warmup.warm(processes, say=terminal.write_line if terminal is not None else print)
 
 
+def pytest_configure(config: pytest.Config) -> None:
+    # xdist queues a run's files by their number of tests (most first); the order below replaces it
+    if hasattr(config.option, "loadscopereorder"):
+        config.option.loadscopereorder = False
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Queue the files for ``--dist loadfile`` longest first, as the warm-up does its jobs: a file
+    with a test marked ``slow`` first (each takes a minute or more: a SymPy build, the kernels'
+    first compiles in a copy of the project), then by number of tests, most first (xdist's own
+    order). xdist hands a worker the next file as it finishes one; a long file queued last (xdist's
+    order put the two tutorials, with four and six tests, at the end) runs alone while the other
+    worker idles. Stable: within a file, and between files of the same rank, collection order."""
+    files: dict[str, list[pytest.Item]] = {}
+    for item in items:
+        files.setdefault(item.nodeid.split("::", 1)[0], []).append(item)
+
+    def rank(group: list[pytest.Item]) -> tuple[bool, int]:
+        return (not any(i.get_closest_marker("slow") for i in group), -len(group))
+
+    items[:] = [item for group in sorted(files.values(), key=rank) for item in group]
+
+
 @pytest.fixture(scope="session")
 def c_export(tmp_path_factory, request):
     """The C target's library (``slipmaps generate --target c``) in a directory of this session,
