@@ -283,6 +283,22 @@ def test_the_sweep_path_gives_the_same_sets_and_resumes(tmp_path):
     assert [c.stat().st_mtime_ns for c in chunks] == stamps
 
 
+def test_the_sweep_path_with_a_float32_next_state_gives_the_same_sets(tmp_path):
+    """``next_state_dtype="float32"`` (the 100^4 run's memory) stores the next states rounded, but
+    the cells come from the float64 values: the same failures, Q_V, kernel and measure."""
+    grid = {k: v for k, v in SWEEP_GRID.items() if k != "retraction_rate"}
+    direct = slipmaps.viability("exact", VIBLY, **grid)
+    swept = slipmaps.viability_sweep(
+        "exact", VIBLY, **grid, out=tmp_path / "f", chunk_rows=1500, next_state_dtype="float32"
+    )
+    assert swept.next_state.dtype == np.float32
+    for name in ("failed", "status", "viable", "kernel", "measure"):
+        assert np.array_equal(getattr(direct, name), getattr(swept, name)), name
+    assert np.array_equal(direct.next_state.astype(np.float32), swept.next_state, equal_nan=True)
+    with pytest.raises(ValueError, match="float64 or float32"):
+        slipmaps.viability_sweep("exact", VIBLY, **grid, out=tmp_path / "g", next_state_dtype="int8")
+
+
 def test_the_sweep_path_on_a_local_dask_cluster(tmp_path):
     pytest.importorskip("distributed")
     grid = {k: v for k, v in SWEEP_GRID.items() if k != "retraction_rate"}

@@ -320,14 +320,17 @@ def checked(
 
 
 def from_transition(
-    call, params: SlipParams, grids: Grids, tm, outside: str, ground: float = 0.0
+    call, params: SlipParams, grids: Grids, tm, outside: str, ground: float = 0.0, cell=None
 ) -> ViableSet:
-    """The study of a computed transition map ``tm``: its cells, the fixed point and the measure."""
+    """The study of a computed transition map ``tm``: its cells (``cell``, when given, the cells of
+    its next states already computed: :func:`.viability_kernel.cells`), the fixed point and the
+    measure."""
     import time
 
     start = time.perf_counter()
     state_grids = list(grids.states.values())
-    cell = cells(tm.next_state, tm.failed, state_grids)
+    if cell is None:
+        cell = cells(tm.next_state, tm.failed, state_grids)
     k = viable_set(tm.failed, cell, len(state_grids), outside)
     seconds = {"map": tm.seconds, "kernel": time.perf_counter() - start}
     return ViableSet(
