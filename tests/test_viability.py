@@ -251,6 +251,114 @@ def test_retraction_with_k_d_grows_the_kernel_of_either_alone(outside, kernels):
         assert np.all(smaller.kernel <= both.kernel) and both.kernel.sum() > smaller.kernel.sum()
 
 
+#: A small grid of vibly's runner on an unknown ground (k_d on k_c 2^(-1 ... 1), k_c among them).
+ROBUST_GRID = {
+    "apex_height": np.linspace(0.5, 2.4, 12),
+    "apex_speed": np.linspace(0.5, 7.0, 12),
+    "touchdown_angle": np.radians(np.linspace(-10, 70, 25)),
+    "k_d": 8200.0 * 2.0 ** np.linspace(-1.0, 1.0, 5),
+}
+GROUNDS = np.linspace(-0.05, 0.05, 5)
+
+
+@pytest.fixture(scope="module")
+def robust():
+    return slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=GROUNDS)
+
+
+@pytest.mark.parametrize("outside", ["fail", "edge"])
+def test_on_an_unknown_ground_the_policies_nest_and_are_fixed_points(outside):
+    """Constant k_d = k_c within k_d chosen at the apex within k_d chosen at the bottom: the kernels,
+    and per state the viable angles; each kernel a fixed point of its policy's iteration. With a
+    step up in the ground set a constant stiffness has an empty kernel: each step up takes m g d of
+    the energy above the ground and nothing gives it back, so the lowest-energy node of a kernel
+    would step into a cell whose lowest node has less energy."""
+    from slipmaps.runtime.analysis.viability_robust import _constant, _one_stage, _two_stage
+
+    rs = slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=GROUNDS, outside=outside)
+    const, one, two = (rs.policies[p] for p in ("constant", "one-stage", "two-stage"))
+    assert rs.failed.shape == (12, 12, 25, 5, 5) and rs.next_state.shape == (12, 12, 25, 5, 5, 2)
+    assert not const.kernel.any() and (~rs.failed[:, :, :, 2]).any()
+    assert 0 < one.kernel.sum() <= two.kernel.sum() < two.kernel.size
+    assert np.all(const.kernel <= one.kernel) and np.all(one.kernel <= two.kernel)
+    assert np.all(const.viable <= one.viable.any(axis=-1)) and np.all(one.viable.any(axis=-1) <= two.viable)
+    assert np.all(one.angles <= two.angles) and two.angles.max() > 0
+    for p, f, c, choose in (
+        (const, rs.failed[:, :, :, 2], rs.cell[:, :, :, 2], _constant),
+        (one, rs.failed, rs.cell, _one_stage),
+        (two, rs.failed, rs.cell, _two_stage),
+    ):
+        assert is_fixed_point(f, c, p.kernel, outside, choose)
+    smaller = two.kernel.copy()
+    smaller[np.unravel_index(int(np.argmax(two.angles)), two.angles.shape)] = False
+    assert not is_fixed_point(rs.failed, rs.cell, smaller, outside, _two_stage)
+
+
+def test_on_a_known_ground_k_d_at_the_bottom_is_k_d_at_the_apex():
+    """One ground height: the two stages give the same kernel and the same viable angles (k_d acts
+    after the bottom, whose state the apex and the angle determine), one stage is
+    ``slipmaps.viability`` with the k_d grid and the constant stiffness without it."""
+    rs = slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=[0.0], outside="edge")
+    one, two = rs.policies["one-stage"], rs.policies["two-stage"]
+    assert 0 < two.kernel.sum() < two.kernel.size
+    assert np.array_equal(one.kernel, two.kernel)
+    assert np.array_equal(one.viable.any(axis=-1), two.viable)
+    free = slipmaps.viability("exact", VIBLY, **ROBUST_GRID, outside="edge")
+    fixed = slipmaps.viability(
+        "exact", VIBLY, **{k: v for k, v in ROBUST_GRID.items() if k != "k_d"}, outside="edge"
+    )
+    assert np.array_equal(free.viable, one.viable) and np.array_equal(free.kernel, one.kernel)
+    assert np.array_equal(fixed.viable, rs.policies["constant"].viable)
+    assert np.array_equal(free.next_state, rs.next_state[..., 0, :], equal_nan=True)
+
+
+def test_two_stage_viable_pairs_survive_random_grounds(robust):
+    """From two-stage viable pairs (seeded; those that one stage does not call viable first), 20
+    steps each on the exact map onto ground heights drawn from the set: k_d chosen once the ground
+    is known, the middle of those viable for every node of the cell the apex lies in (the
+    conservative rule's cell; when none is, the nearest node's), and the next angle chosen alike:
+    no step fails. (The nearest node alone is not enough on this coarse grid: of 30 runs seeded
+    alike, one stepped from between the nodes beyond the grid and then backward.)"""
+    rng = np.random.default_rng(31)
+    two = robust.policies["two-stage"]
+    only_two = np.argwhere(two.viable & ~robust.policies["one-stage"].viable.any(axis=-1))
+    pool = np.argwhere(two.viable)
+    assert len(pool) > 100 and len(only_two) > 0
+    picks = list(only_two[rng.choice(len(only_two), min(3, len(only_two)), replace=False)])
+    picks += list(pool[rng.choice(len(pool), 10 - len(picks), replace=False)])
+    choices = robust.choices("two-stage")
+    heights, speeds = robust.states["apex_height"], robust.states["apex_speed"]
+
+    def nodes(h, v):
+        """The nodes of the cell around (h, v), the nearest first."""
+        i = int(np.clip(np.searchsorted(heights, h) - 1, 0, heights.size - 2))
+        j = int(np.clip(np.searchsorted(speeds, v) - 1, 0, speeds.size - 2))
+        around = [(i + di, j + dj) for di in (0, 1) for dj in (0, 1)]
+        return sorted(around, key=lambda n: abs(heights[n[0]] - h) / 0.19 + abs(speeds[n[1]] - v) / 0.59)
+
+    def middle(viable):
+        """The middle index viable at every node, else at the nearest node (the first)."""
+        every = np.logical_and.reduce(viable)
+        index = np.flatnonzero(every if every.any() else viable[0])
+        assert index.size
+        return int(index[index.size // 2])
+
+    steps = 0
+    for i, j, a in picks:
+        h, v, at = heights[i], speeds[j], [(i, j)]
+        for _ in range(20):
+            u = int(rng.integers(GROUNDS.size))
+            kd = robust.k_d[middle([choices[n][a, :, u] for n in at])]
+            params = VIBLY.with_(k_d=float(kd))
+            step = slipmaps.apex_return("exact", params, h, v, robust.touchdown_angle[a], ground=GROUNDS[u])
+            assert step.ok and step.apex_speed > 0, ((i, j, a), steps, step.status)
+            h, v = step.apex_height, step.apex_speed
+            at = nodes(h, v)
+            a = middle([two.viable[n] for n in at])
+            steps += 1
+    assert steps == 200
+
+
 #: A small (height, speed) x (angle, k_d, rate) grid of vibly's runner for the sweep path.
 SWEEP_GRID = {
     "apex_height": np.linspace(0.5, 2.4, 12),
@@ -428,6 +536,33 @@ def test_cli_sweep_out_writes_the_sweep_and_the_same_arrays(tmp_path, capsys):
     capsys.readouterr()
 
 
+def test_cli_grounds_compares_the_three_policies(tmp_path, capsys):
+    """``--grounds``: the table of the three policies, the figure, the arrays and the JSON summary
+    are those of ``slipmaps.robust_viability`` on the same grid."""
+    grid = ["--heights", "0.8", "1.4", "5", "--speeds", "3", "6", "5", "--angles-deg", "10", "40", "7"]
+    grid += ["--k-d-grid", "10000", "40000", "3", "--grounds", "-0.05", "0.05", "3"]
+    fig, arrays = tmp_path / "g.png", tmp_path / "g.npz"
+    assert main(["viability", *grid, "--figure", str(fig), "--out", str(arrays), "--no-progress"]) == 0
+    out = capsys.readouterr().out
+    assert all(p in out for p in ("constant", "one-stage", "two-stage")) and fig.stat().st_size > 0
+    rs = slipmaps.robust_viability(
+        "exact",
+        slipmaps.HUMAN_RUNNER,
+        apex_height=np.linspace(0.8, 1.4, 5),
+        apex_speed=np.linspace(3, 6, 5),
+        touchdown_angle=np.radians(np.linspace(10, 40, 7)),
+        k_d=np.linspace(10000, 40000, 3),
+        ground=np.linspace(-0.05, 0.05, 3),
+    )
+    with np.load(arrays) as saved:
+        assert saved["action_k_d"].tolist() == [10000.0, 20000.0, 25000.0, 40000.0]  # k_c added
+        for p in ("constant", "one_stage", "two_stage"):
+            assert np.array_equal(saved[f"{p}_kernel"], rs.policies[p.replace("_", "-")].kernel)
+    assert main(["viability", *grid, "--no-figure", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["summary"]["two-stage"] == rs.policies["two-stage"].summary()
+
+
 @pytest.mark.parametrize(
     ("argv", "words"),
     [
@@ -441,6 +576,7 @@ def test_cli_sweep_out_writes_the_sweep_and_the_same_arrays(tmp_path, capsys):
         (["--energy", "1877", "--k-d-grid", "8000", "9000", "2"], "changes the energy"),
         (["--scheduler", "local:2"], "give --sweep-out too"),
         (["--vibly", "--sweep-out", "sw"], "--sweep-out needs a (height, speed) grid"),
+        (["--speeds", "1", "2", "3", "--grounds", "-0.1", "0.1", "3"], "--grounds needs"),
     ],
 )
 def test_cli_user_errors_are_one_line_and_exit_2(tmp_path, capsys, monkeypatch, argv, words):
