@@ -463,13 +463,14 @@ def _agreement(q: np.ndarray, ref: np.ndarray) -> dict:
     }
 
 
-def part_robust(n: int, depths, maps=("iterative", "exact")) -> dict:
+def part_robust(n: int, depths, maps=("iterative", "exact"), figure: str | None = None) -> dict:
     """k_d at the apex or at the bottom on an unknown ground (``slipmaps.robust_viability``): both
     runners of the stiffness part on ``--n`` x ``--n`` states, 2 ``--n`` + 1 angles, k_d on
     k_c 2^(-1 ... 1) in 5, the ground on 5 heights in [-d, d] per ``depths`` d; kernels and shares
     of viable angles per policy (also averaged over the two-stage kernel, 0 outside a policy's),
     each map against the exact map; and with the ground known (one height, 0) whether the two
-    stages give the same sets."""
+    stages give the same sets. ``figure``: the human runner's sets on the largest depth (the exact
+    map, the grid's border not viable) drawn there."""
     from slipmaps.runtime.analysis.viability_robust import robust_viability
 
     angles = np.radians(np.linspace(-10.0, 70.0, 2 * n + 1))
@@ -507,6 +508,9 @@ def part_robust(n: int, depths, maps=("iterative", "exact")) -> dict:
                         name, params, **grid, ground=np.linspace(-depth, depth, 5), outside=outside
                     )
                     sets[name] = rs
+                    if figure and name == "exact" and outside == "fail" and depth == max(depths):
+                        if params is slipmaps.HUMAN_RUNNER:
+                            rs.plot(figure)
                     cell = rs.summary() | {"seconds": dict(rs.seconds)}
                     inside = rs.policies["two-stage"].kernel
                     for policy, p in rs.policies.items():
@@ -669,7 +673,7 @@ def main() -> None:
     )
     ap.add_argument("--scale-out", default=None, help="scale: the sweep's directory (with --scale-scheduler)")
     ap.add_argument("--json", default=None, help="write the results here too")
-    ap.add_argument("--figure", default=None, help="the maps' figure (part maps)")
+    ap.add_argument("--figure", default=None, help="the figure of part maps, or of part robust")
     ap.add_argument("--no-levels", action="store_true", help="stiffness: skip the per-level kernels")
     args = ap.parse_args()
     parts = args.part or ["vibly", "maps", "stiffness"]
@@ -688,7 +692,7 @@ def main() -> None:
         elif part == "retraction2d":
             out["retraction2d"] = part_retraction2d(args.n)
         elif part == "robust":
-            out["robust"] = part_robust(args.n, args.depth or [0.02, 0.05, 0.1, 0.2])
+            out["robust"] = part_robust(args.n, args.depth or [0.02, 0.05, 0.1, 0.2], figure=args.figure)
         elif part == "stiffness":
             out["stiffness"] = part_stiffness(args.n, not args.no_levels)
         else:
