@@ -10,6 +10,10 @@ viability``.
   license: tests/data/VIBLY_LICENSE) reproduced to the bit with ``outside="edge"``.
 - A state-action pair called viable is simulated on the exact map for many steps, choosing each
   step a viable action of the grid node nearest the state, without a fall.
+- An unknown ground (``slipmaps.robust_viability``): k_d = k_c, k_d chosen at the apex and k_d
+  chosen at the bottom nest and are fixed points; on one ground height the last two are equal; a
+  two-stage viable pair survives exact steps onto random grounds with k_d chosen at the bottom.
+- The sweep path: the same sets in this process, resumed, with a float32 next state, on Dask.
 - The command line: its outputs (summary, JSON, the arrays, the figure) and its one-line errors.
 """
 
@@ -533,6 +537,11 @@ def test_cli_sweep_out_writes_the_sweep_and_the_same_arrays(tmp_path, capsys):
     assert a["viable"].shape == (8, 7, 11, 3) and a["kernel"].any()
     assert all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.files)
     assert (tmp_path / "s" / "manifest.json").is_file()
+    small = ["--out", str(tmp_path / "c.npz"), "--sweep-out", str(tmp_path / "s"), "--next-state-float32"]
+    assert main(["viability", *grid, *small]) == 0  # resumed: the same sweep
+    c = np.load(tmp_path / "c.npz")
+    assert c["next_state"].dtype == np.float32
+    assert all(np.array_equal(a[k], c[k]) for k in ("failed", "status", "viable", "kernel", "measure"))
     capsys.readouterr()
 
 
@@ -577,6 +586,7 @@ def test_cli_grounds_compares_the_three_policies(tmp_path, capsys):
         (["--scheduler", "local:2"], "give --sweep-out too"),
         (["--vibly", "--sweep-out", "sw"], "--sweep-out needs a (height, speed) grid"),
         (["--speeds", "1", "2", "3", "--grounds", "-0.1", "0.1", "3"], "--grounds needs"),
+        (["--next-state-float32"], "give --sweep-out too"),
     ],
 )
 def test_cli_user_errors_are_one_line_and_exit_2(tmp_path, capsys, monkeypatch, argv, words):

@@ -56,7 +56,8 @@ class ViableSet:
     """A viability study on a grid (``slipmaps.viability``): arrays over states (S) or states x actions (Q).
 
     ``failed`` (Q, bool: the step fails), ``status`` (Q, int8 :class:`~slipmaps.Status` codes; OK
-    where only the next speed failed), ``next_state`` (Q x state dims, NaN where failed), ``viable``
+    where only the next speed failed), ``next_state`` (Q x state dims, NaN where failed; float64, or
+    float32 from ``viability_sweep(..., next_state_dtype="float32")``), ``viable``
     (Q_V), ``kernel`` (S_V), ``measure`` (S, the share of viable actions), ``states`` and ``actions``
     (the grids by name), ``energy`` [J] or None, ``map``, ``params``, ``options``, ``outside``,
     ``rounds`` of the fixed-point iteration, ``seconds`` (``map``: the steps, ``kernel``: the

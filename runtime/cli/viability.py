@@ -19,8 +19,9 @@ touchdown is one of these heights [m], unknown at the apex; the kernels and shar
 angles with k_d = k_c, k_d chosen at the apex and k_d chosen at the bottom
 (:func:`slipmaps.robust_viability`). ``--sweep-out DIR`` computes the steps of a (height, speed)
 grid as a resumable sweep into DIR (:func:`slipmaps.viability_sweep`), ``--scheduler local:N`` on a
-local Dask cluster. Paths are checked before any work, and so is the memory the grid needs. Exit
-status: 0 done, 2 a user error (one line on standard error), 130 interrupted.
+local Dask cluster, ``--next-state-float32`` holding the next states in half the memory. Paths are
+checked before any work, and so is the memory the grid needs. Exit status: 0 done, 2 a user error
+(one line on standard error), 130 interrupted.
 """
 
 from __future__ import annotations
@@ -107,6 +108,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
         default=None,
         help="where the sweep's chunks run: inprocess (default), local:N (a local Dask cluster) or a "
         "dask scheduler address",
+    )
+    w.add_argument(
+        "--next-state-float32",
+        action="store_true",
+        help="hold the next states as float32 (half the largest array; the same sets)",
     )
     p.add_argument("--figure", default="slipmaps_viability.png", help="the figure (default %(default)s)")
     p.add_argument("--no-figure", action="store_true", help="do not write the figure")
@@ -263,6 +269,8 @@ def run(args: argparse.Namespace) -> int:
     progress = False if args.no_progress else None
     if args.scheduler is not None and args.sweep_out is None:
         raise ValueError("--scheduler runs the sweep of --sweep-out DIR: give --sweep-out too")
+    if args.next_state_float32 and args.sweep_out is None:
+        raise ValueError("--next-state-float32 is the sweep's (--sweep-out DIR): give --sweep-out too")
     if args.grounds is not None:
         return _robust(args, name, params, kw, figure, out, progress)
     if args.sweep_out is not None:
@@ -274,7 +282,16 @@ def run(args: argparse.Namespace) -> int:
         from ..sweep.viability import viability_sweep
 
         out_dir = writable_dir("--sweep-out", args.sweep_out)
-        vs = viability_sweep(name, params, out=out_dir, scheduler=args.scheduler, progress=progress, **kw)
+        dtype = "float32" if args.next_state_float32 else "float64"
+        vs = viability_sweep(
+            name,
+            params,
+            out=out_dir,
+            scheduler=args.scheduler,
+            next_state_dtype=dtype,
+            progress=progress,
+            **kw,
+        )
     else:
         vs = viability(name, params, progress=progress, **kw)
     written = []
