@@ -298,6 +298,18 @@ def test_on_an_unknown_ground_the_policies_nest_and_are_fixed_points(outside):
     assert not is_fixed_point(rs.failed, rs.cell, smaller, outside, _two_stage)
 
 
+def test_with_steps_down_only_the_three_kernels_are_strictly_nested():
+    """Ground heights 0, -2.5 and -5 cm with the ``"edge"`` border (a runner gaining energy beyond
+    the grid judged by its edge): a constant stiffness keeps a kernel too, and each policy adds to
+    the one before it (measured: 123, 124, 125 states)."""
+    rs = slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=[-0.05, -0.025, 0.0], outside="edge")
+    const, one, two = (rs.policies[p] for p in ("constant", "one-stage", "two-stage"))
+    assert [int(p.kernel.sum()) for p in (const, one, two)] == [123, 124, 125]
+    assert np.all(const.kernel <= one.kernel) and np.all(one.kernel <= two.kernel)
+    assert np.all(const.viable <= one.viable.any(axis=-1)) and np.all(one.viable.any(axis=-1) <= two.viable)
+    assert (two.viable & ~one.viable.any(axis=-1)).any()
+
+
 def test_on_a_known_ground_k_d_at_the_bottom_is_k_d_at_the_apex():
     """One ground height: the two stages give the same kernel and the same viable angles (k_d acts
     after the bottom, whose state the apex and the angle determine), one stage is

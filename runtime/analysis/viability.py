@@ -33,7 +33,9 @@ one viable action) and the measure of robustness of a state (the share of its ac
 The transition map is batches of the public apex-return API (one per k_d and chunk of states), so the
 exact map on vibly's SLIP demo grid (28,980 pairs) takes 0.45 s once compiled, on 2 busy cores
 (docs/viability.md); with the same results its steps run as a resumable sweep, also on Dask
-(``slipmaps.viability_sweep``, runtime/sweep/viability.py).
+(``slipmaps.viability_sweep``, runtime/sweep/viability.py). On a ground whose height is unknown at
+the apex, with k_d chosen at the apex or at the bottom: ``slipmaps.robust_viability``
+(:mod:`.viability_robust`).
 """
 
 from __future__ import annotations
