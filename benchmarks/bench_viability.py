@@ -23,8 +23,14 @@ Parts (``--part``, repeatable; default all but ``scale``):
   ``--n`` states, 2 ``--n`` + 1 angles, 5 k_d in [k/2, 2k], 5 rates in [-3, 0] rad/s; the exact map):
   the kernel and the measures with the actions angle; angle and k_d; angle and rate; all three; both
   rules for the grid's border.
-- ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``): seconds and
-  peak memory (ru_maxrss).
+- ``robust``: k_d chosen at the apex or at the bottom on an unknown ground (5 heights in
+  [-d, d] per ``--depth`` d [m]; default 0.02, 0.05, 0.1, 0.2) with k_d = k_c as the baseline,
+  both runners, ``iterative`` and the exact map (``slipmaps.robust_viability``); and with the
+  ground known, whether the two stages give the same sets.
+- ``scale``: ``--n``^4 pairs (height, speed, angle, k_d) with a map (``--scale-map``), in this
+  process or (``--scale-scheduler local:2 --scale-out DIR``) as a sweep on a Dask cluster: seconds,
+  peak memory (this process and its children, sampled) and the sets' fingerprints. The full run of
+  the issue is ``--part scale --n 100 --scale-map iterative`` (minutes; CI runs small grids only).
 
 Usage: ``python benchmarks/bench_viability.py [--part vibly ...] [--json PATH]``.
 """
@@ -445,41 +451,229 @@ def part_retraction2d(n: int) -> dict:
     return out
 
 
-def part_scale(n: int, name: str, n_k_d: int | None = None) -> dict:
+def _agreement(q: np.ndarray, ref: np.ndarray) -> dict:
+    """A set of pairs against the exact map's: IoU, false-viable share and count, missed pairs."""
+    union = int((q | ref).sum())
+    false = int((q & ~ref).sum())
+    return {
+        "iou": int((q & ref).sum()) / union if union else 1.0,
+        "false_viable": false,
+        "false_viable_share": false / int(q.sum()) if q.any() else 0.0,
+        "missed": int((ref & ~q).sum()),
+    }
+
+
+def part_robust(n: int, depths, maps=("iterative", "exact"), figure: str | None = None) -> dict:
+    """k_d at the apex or at the bottom on an unknown ground (``slipmaps.robust_viability``): both
+    runners of the stiffness part on ``--n`` x ``--n`` states, 2 ``--n`` + 1 angles, k_d on
+    k_c 2^(-1 ... 1) in 5, the ground on 5 heights in [-d, d] per ``depths`` d; kernels and shares
+    of viable angles per policy (also averaged over the two-stage kernel, 0 outside a policy's),
+    each map against the exact map; and with the ground known (one height, 0) whether the two
+    stages give the same sets. ``figure``: the human runner's sets on the largest depth (the exact
+    map, the grid's border not viable) drawn there."""
+    from slipmaps.runtime.analysis.viability_robust import robust_viability
+
+    angles = np.radians(np.linspace(-10.0, 70.0, 2 * n + 1))
+    cases = {
+        "vibly (k 8200 N/m)": (VIBLY, np.linspace(0.5, 2.4, n), np.linspace(0.5, 7.0, n)),
+        "human runner (k 20 kN/m)": (
+            slipmaps.HUMAN_RUNNER,
+            np.linspace(0.6, 1.6, n),
+            np.linspace(1.0, 8.0, n),
+        ),
+    }
+    out = {"depths": list(depths), "n": n, "angles": angles.size}
+    for label, (params, heights, speeds) in cases.items():
+        grid = {
+            "apex_height": heights,
+            "apex_speed": speeds,
+            "touchdown_angle": angles,
+            "k_d": params.k_c * 2.0 ** np.linspace(-1.0, 1.0, 5),
+        }
+        row: dict = {"heights": [heights[0], heights[-1]], "speeds": [speeds[0], speeds[-1]]}
+        for outside in ("fail", "edge"):
+            for name in maps:
+                known = robust_viability(name, params, **grid, ground=[0.0], outside=outside)
+                one, two = known.policies["one-stage"], known.policies["two-stage"]
+                row[f"{name} ({outside}) known ground"] = {
+                    "same_kernel": bool(np.array_equal(one.kernel, two.kernel)),
+                    "same_viable_angles": bool(np.array_equal(one.viable.any(axis=-1), two.viable)),
+                    "kernel_states": int(two.kernel.sum()),
+                    "angles_in_kernel": two.summary()["angles_in_kernel"],
+                }
+            for depth in depths:
+                sets = {}
+                for name in maps:
+                    rs = robust_viability(
+                        name, params, **grid, ground=np.linspace(-depth, depth, 5), outside=outside
+                    )
+                    sets[name] = rs
+                    if figure and name == "exact" and outside == "fail" and depth == max(depths):
+                        if params is slipmaps.HUMAN_RUNNER:
+                            rs.plot(figure)
+                    cell = rs.summary() | {"seconds": dict(rs.seconds)}
+                    inside = rs.policies["two-stage"].kernel
+                    for policy, p in rs.policies.items():
+                        cell[policy]["angles_in_two_stage_kernel"] = (
+                            float(p.angles[inside].mean()) if inside.any() else 0.0
+                        )
+                    row[f"{name} ({outside}) d={depth:g}"] = cell
+                if "exact" in sets:
+                    for name, rs in sets.items():
+                        if name != "exact":
+                            row[f"{name} ({outside}) d={depth:g}"]["against exact"] = {
+                                p: _agreement(rs.policies[p].viable, sets["exact"].policies[p].viable)
+                                for p in rs.policies
+                            }
+                print(label, outside, depth, flush=True)
+        out[label] = row
+    return out
+
+
+class PeakMemory:
+    """The peak resident memory of this process and its descendants (a Dask cluster's workers and
+    their nanny processes), sampled every ``every`` seconds by a thread: ``this`` (this process's
+    peak), ``others`` (the peak of each other process by pid) and ``total`` (the peak of the
+    sum over the tree at one sample), in bytes."""
+
+    def __init__(self, every: float = 0.2) -> None:
+        import threading
+
+        import psutil
+
+        self._me = psutil.Process()
+        self._every = every
+        self._stop = threading.Event()
+        self.this = self.total = 0
+        self.others: dict[int, int] = {}
+        self._thread = threading.Thread(target=self._run, daemon=True)
+
+    def _sample(self) -> None:
+        import psutil
+
+        total = 0
+        for proc in [self._me, *self._me.children(recursive=True)]:
+            try:
+                rss = proc.memory_info().rss
+            except psutil.Error:
+                continue
+            total += rss
+            if proc.pid == self._me.pid:
+                self.this = max(self.this, rss)
+            else:
+                self.others[proc.pid] = max(self.others.get(proc.pid, 0), rss)
+        self.total = max(self.total, total)
+
+    def _run(self) -> None:
+        while not self._stop.wait(self._every):
+            self._sample()
+
+    def __enter__(self):
+        self._sample()
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self._stop.set()
+        self._thread.join()
+        self._sample()
+
+    def as_dict(self) -> dict:
+        return {
+            "peak_this_process_GB": self.this / 1e9,
+            "peak_other_processes_GB": sorted((v / 1e9 for v in self.others.values()), reverse=True),
+            "peak_sum_GB": self.total / 1e9,
+        }
+
+
+def fingerprints(vs) -> dict:
+    """SHA-256 (first 16 hex digits) of the study's arrays: equal fingerprints, equal arrays."""
+    import hashlib
+
+    def digest(a):
+        return hashlib.sha256(np.ascontiguousarray(a).tobytes()).hexdigest()[:16]
+
+    return {name: digest(getattr(vs, name)) for name in ("failed", "status", "viable", "kernel", "measure")}
+
+
+def part_scale(
+    n: int, name: str, n_k_d: int | None = None, scheduler: str | None = None, out: str | None = None
+) -> dict:
+    """``--n``^4 pairs with map ``name`` in this process (``scheduler`` None: ``slipmaps.viability``)
+    or as a sweep into ``out`` on ``scheduler`` (``slipmaps.viability_sweep``, Parquet, next_state as
+    float32): seconds, the peak memory of this process and its children, and the sets' fingerprints
+    (equal to the in-process run's: the same sets)."""
     heights = np.linspace(0.5, 2.4, n)
     speeds = np.linspace(0.5, 7.0, n)
     angles = np.radians(np.linspace(-10.0, 70.0, n))
     k_d = np.linspace(4100.0, 16400.0, n if n_k_d is None else n_k_d)
     grid = {"apex_height": heights, "apex_speed": speeds, "touchdown_angle": angles[:2], "k_d": k_d[:2]}
     slipmaps.viability(name, VIBLY, **grid)  # compile or load
-    t = time.perf_counter()
-    vs = slipmaps.viability(
-        name, VIBLY, apex_height=heights, apex_speed=speeds, touchdown_angle=angles, k_d=k_d, progress=True
-    )
-    total = time.perf_counter() - t
+    grid = {"apex_height": heights, "apex_speed": speeds, "touchdown_angle": angles, "k_d": k_d}
+    with PeakMemory() as memory:
+        t = time.perf_counter()
+        if scheduler is None:
+            vs = slipmaps.viability(name, VIBLY, **grid, progress=True)
+        else:
+            if out is None:
+                raise SystemExit("--scale-scheduler needs --scale-out DIR (the sweep's directory)")
+            vs = slipmaps.viability_sweep(
+                name,
+                VIBLY,
+                **grid,
+                out=out,
+                scheduler=scheduler,
+                next_state_dtype="float32",
+                progress=True,
+            )
+        total = time.perf_counter() - t
     return {
         "map": name,
+        "scheduler": scheduler or "inprocess",
         "pairs": int(vs.failed.size),
         "seconds": total,
         "seconds_map": vs.seconds["map"],
         "seconds_kernel": vs.seconds["kernel"],
         "us_per_pair": 1e6 * vs.seconds["map"] / vs.failed.size,
         "max_rss_GB": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6,
+        **memory.as_dict(),
         "kernel_states": int(vs.kernel.sum()),
+        "viable_pairs": int(vs.viable.sum()),
+        "mean_measure_in_kernel": float(vs.measure[vs.kernel].mean()) if vs.kernel.any() else 0.0,
         "rounds": vs.rounds,
+        "fingerprints": fingerprints(vs),
     }
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parts = ("vibly", "maps", "maps2d", "iterative2d", "stiffness", "retraction", "retraction2d", "scale")
+    parts = (
+        "vibly",
+        "maps",
+        "maps2d",
+        "iterative2d",
+        "stiffness",
+        "retraction",
+        "retraction2d",
+        "robust",
+        "scale",
+    )
     ap.add_argument("--part", action="append", choices=parts)
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--n", type=int, default=30, help="points per axis (stiffness, scale)")
+    ap.add_argument(
+        "--depth", type=float, action="append", help="robust: the ground on [-depth, depth] m (repeatable)"
+    )
     ap.add_argument("--scale-map", default="exact")
     ap.add_argument("--scale-k-d", type=int, default=None, help="k_d points of the scale grid (default --n)")
+    ap.add_argument(
+        "--scale-scheduler",
+        default=None,
+        help="scale: run the grid as a sweep (slipmaps.viability_sweep) on this scheduler, e.g. local:2",
+    )
+    ap.add_argument("--scale-out", default=None, help="scale: the sweep's directory (with --scale-scheduler)")
     ap.add_argument("--json", default=None, help="write the results here too")
-    ap.add_argument("--figure", default=None, help="the maps' figure (part maps)")
+    ap.add_argument("--figure", default=None, help="the figure of part maps, or of part robust")
     ap.add_argument("--no-levels", action="store_true", help="stiffness: skip the per-level kernels")
     args = ap.parse_args()
     parts = args.part or ["vibly", "maps", "stiffness"]
@@ -497,10 +691,14 @@ def main() -> None:
             out["retraction"] = part_retraction()
         elif part == "retraction2d":
             out["retraction2d"] = part_retraction2d(args.n)
+        elif part == "robust":
+            out["robust"] = part_robust(args.n, args.depth or [0.02, 0.05, 0.1, 0.2], figure=args.figure)
         elif part == "stiffness":
             out["stiffness"] = part_stiffness(args.n, not args.no_levels)
         else:
-            out["scale"] = part_scale(args.n, args.scale_map, args.scale_k_d)
+            out["scale"] = part_scale(
+                args.n, args.scale_map, args.scale_k_d, args.scale_scheduler, args.scale_out
+            )
         print(json.dumps({part: out[part]}, indent=1), flush=True)
     out["machine"]["load_after"] = __import__("os").getloadavg()
     if args.json:

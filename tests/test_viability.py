@@ -10,6 +10,10 @@ viability``.
   license: tests/data/VIBLY_LICENSE) reproduced to the bit with ``outside="edge"``.
 - A state-action pair called viable is simulated on the exact map for many steps, choosing each
   step a viable action of the grid node nearest the state, without a fall.
+- An unknown ground (``slipmaps.robust_viability``): k_d = k_c, k_d chosen at the apex and k_d
+  chosen at the bottom nest and are fixed points; on one ground height the last two are equal; a
+  two-stage viable pair survives exact steps onto random grounds with k_d chosen at the bottom.
+- The sweep path: the same sets in this process, resumed, with a float32 next state, on Dask.
 - The command line: its outputs (summary, JSON, the arrays, the figure) and its one-line errors.
 """
 
@@ -251,6 +255,126 @@ def test_retraction_with_k_d_grows_the_kernel_of_either_alone(outside, kernels):
         assert np.all(smaller.kernel <= both.kernel) and both.kernel.sum() > smaller.kernel.sum()
 
 
+#: A small grid of vibly's runner on an unknown ground (k_d on k_c 2^(-1 ... 1), k_c among them).
+ROBUST_GRID = {
+    "apex_height": np.linspace(0.5, 2.4, 12),
+    "apex_speed": np.linspace(0.5, 7.0, 12),
+    "touchdown_angle": np.radians(np.linspace(-10, 70, 25)),
+    "k_d": 8200.0 * 2.0 ** np.linspace(-1.0, 1.0, 5),
+}
+GROUNDS = np.linspace(-0.05, 0.05, 5)
+
+
+@pytest.fixture(scope="module")
+def robust():
+    return slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=GROUNDS)
+
+
+@pytest.mark.parametrize("outside", ["fail", "edge"])
+def test_on_an_unknown_ground_the_policies_nest_and_are_fixed_points(outside):
+    """Constant k_d = k_c within k_d chosen at the apex within k_d chosen at the bottom: the kernels,
+    and per state the viable angles; each kernel a fixed point of its policy's iteration. With a
+    step up in the ground set a constant stiffness has an empty kernel: each step up takes m g d of
+    the energy above the ground and nothing gives it back, so the lowest-energy node of a kernel
+    would step into a cell whose lowest node has less energy."""
+    from slipmaps.runtime.analysis.viability_robust import _constant, _one_stage, _two_stage
+
+    rs = slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=GROUNDS, outside=outside)
+    const, one, two = (rs.policies[p] for p in ("constant", "one-stage", "two-stage"))
+    assert rs.failed.shape == (12, 12, 25, 5, 5) and rs.next_state.shape == (12, 12, 25, 5, 5, 2)
+    assert not const.kernel.any() and (~rs.failed[:, :, :, 2]).any()
+    assert 0 < one.kernel.sum() <= two.kernel.sum() < two.kernel.size
+    assert np.all(const.kernel <= one.kernel) and np.all(one.kernel <= two.kernel)
+    assert np.all(const.viable <= one.viable.any(axis=-1)) and np.all(one.viable.any(axis=-1) <= two.viable)
+    assert np.all(one.angles <= two.angles) and two.angles.max() > 0
+    for p, f, c, choose in (
+        (const, rs.failed[:, :, :, 2], rs.cell[:, :, :, 2], _constant),
+        (one, rs.failed, rs.cell, _one_stage),
+        (two, rs.failed, rs.cell, _two_stage),
+    ):
+        assert is_fixed_point(f, c, p.kernel, outside, choose)
+    smaller = two.kernel.copy()
+    smaller[np.unravel_index(int(np.argmax(two.angles)), two.angles.shape)] = False
+    assert not is_fixed_point(rs.failed, rs.cell, smaller, outside, _two_stage)
+
+
+def test_with_steps_down_only_the_three_kernels_are_strictly_nested():
+    """Ground heights 0, -2.5 and -5 cm with the ``"edge"`` border (a runner gaining energy beyond
+    the grid judged by its edge): a constant stiffness keeps a kernel too, and each policy adds to
+    the one before it (measured: 123, 124, 125 states)."""
+    rs = slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=[-0.05, -0.025, 0.0], outside="edge")
+    const, one, two = (rs.policies[p] for p in ("constant", "one-stage", "two-stage"))
+    assert [int(p.kernel.sum()) for p in (const, one, two)] == [123, 124, 125]
+    assert np.all(const.kernel <= one.kernel) and np.all(one.kernel <= two.kernel)
+    assert np.all(const.viable <= one.viable.any(axis=-1)) and np.all(one.viable.any(axis=-1) <= two.viable)
+    assert (two.viable & ~one.viable.any(axis=-1)).any()
+
+
+def test_on_a_known_ground_k_d_at_the_bottom_is_k_d_at_the_apex():
+    """One ground height: the two stages give the same kernel and the same viable angles (k_d acts
+    after the bottom, whose state the apex and the angle determine), one stage is
+    ``slipmaps.viability`` with the k_d grid and the constant stiffness without it."""
+    rs = slipmaps.robust_viability("exact", VIBLY, **ROBUST_GRID, ground=[0.0], outside="edge")
+    one, two = rs.policies["one-stage"], rs.policies["two-stage"]
+    assert 0 < two.kernel.sum() < two.kernel.size
+    assert np.array_equal(one.kernel, two.kernel)
+    assert np.array_equal(one.viable.any(axis=-1), two.viable)
+    free = slipmaps.viability("exact", VIBLY, **ROBUST_GRID, outside="edge")
+    fixed = slipmaps.viability(
+        "exact", VIBLY, **{k: v for k, v in ROBUST_GRID.items() if k != "k_d"}, outside="edge"
+    )
+    assert np.array_equal(free.viable, one.viable) and np.array_equal(free.kernel, one.kernel)
+    assert np.array_equal(fixed.viable, rs.policies["constant"].viable)
+    assert np.array_equal(free.next_state, rs.next_state[..., 0, :], equal_nan=True)
+
+
+def test_two_stage_viable_pairs_survive_random_grounds(robust):
+    """From two-stage viable pairs (seeded; those that one stage does not call viable first), 20
+    steps each on the exact map onto ground heights drawn from the set: k_d chosen once the ground
+    is known, the middle of those viable for every node of the cell the apex lies in (the
+    conservative rule's cell; when none is, the nearest node's), and the next angle chosen alike:
+    no step fails. (The nearest node alone is not enough on this coarse grid: of 30 runs seeded
+    alike, one stepped from between the nodes beyond the grid and then backward.)"""
+    rng = np.random.default_rng(31)
+    two = robust.policies["two-stage"]
+    only_two = np.argwhere(two.viable & ~robust.policies["one-stage"].viable.any(axis=-1))
+    pool = np.argwhere(two.viable)
+    assert len(pool) > 100 and len(only_two) > 0
+    picks = list(only_two[rng.choice(len(only_two), min(3, len(only_two)), replace=False)])
+    picks += list(pool[rng.choice(len(pool), 10 - len(picks), replace=False)])
+    choices = robust.choices("two-stage")
+    heights, speeds = robust.states["apex_height"], robust.states["apex_speed"]
+
+    def nodes(h, v):
+        """The nodes of the cell around (h, v), the nearest first."""
+        i = int(np.clip(np.searchsorted(heights, h) - 1, 0, heights.size - 2))
+        j = int(np.clip(np.searchsorted(speeds, v) - 1, 0, speeds.size - 2))
+        around = [(i + di, j + dj) for di in (0, 1) for dj in (0, 1)]
+        return sorted(around, key=lambda n: abs(heights[n[0]] - h) / 0.19 + abs(speeds[n[1]] - v) / 0.59)
+
+    def middle(viable):
+        """The middle index viable at every node, else at the nearest node (the first)."""
+        every = np.logical_and.reduce(viable)
+        index = np.flatnonzero(every if every.any() else viable[0])
+        assert index.size
+        return int(index[index.size // 2])
+
+    steps = 0
+    for i, j, a in picks:
+        h, v, at = heights[i], speeds[j], [(i, j)]
+        for _ in range(20):
+            u = int(rng.integers(GROUNDS.size))
+            kd = robust.k_d[middle([choices[n][a, :, u] for n in at])]
+            params = VIBLY.with_(k_d=float(kd))
+            step = slipmaps.apex_return("exact", params, h, v, robust.touchdown_angle[a], ground=GROUNDS[u])
+            assert step.ok and step.apex_speed > 0, ((i, j, a), steps, step.status)
+            h, v = step.apex_height, step.apex_speed
+            at = nodes(h, v)
+            a = middle([two.viable[n] for n in at])
+            steps += 1
+    assert steps == 200
+
+
 #: A small (height, speed) x (angle, k_d, rate) grid of vibly's runner for the sweep path.
 SWEEP_GRID = {
     "apex_height": np.linspace(0.5, 2.4, 12),
@@ -281,6 +405,22 @@ def test_the_sweep_path_gives_the_same_sets_and_resumes(tmp_path):
     again = slipmaps.viability_sweep("exact", VIBLY, **SWEEP_GRID, out=tmp_path / "s", chunk_rows=1000)
     _same_sets(direct, again)
     assert [c.stat().st_mtime_ns for c in chunks] == stamps
+
+
+def test_the_sweep_path_with_a_float32_next_state_gives_the_same_sets(tmp_path):
+    """``next_state_dtype="float32"`` (the 100^4 run's memory) stores the next states rounded, but
+    the cells come from the float64 values: the same failures, Q_V, kernel and measure."""
+    grid = {k: v for k, v in SWEEP_GRID.items() if k != "retraction_rate"}
+    direct = slipmaps.viability("exact", VIBLY, **grid)
+    swept = slipmaps.viability_sweep(
+        "exact", VIBLY, **grid, out=tmp_path / "f", chunk_rows=1500, next_state_dtype="float32"
+    )
+    assert swept.next_state.dtype == np.float32
+    for name in ("failed", "status", "viable", "kernel", "measure"):
+        assert np.array_equal(getattr(direct, name), getattr(swept, name)), name
+    assert np.array_equal(direct.next_state.astype(np.float32), swept.next_state, equal_nan=True)
+    with pytest.raises(ValueError, match="float64 or float32"):
+        slipmaps.viability_sweep("exact", VIBLY, **grid, out=tmp_path / "g", next_state_dtype="int8")
 
 
 def test_the_sweep_path_on_a_local_dask_cluster(tmp_path):
@@ -409,7 +549,39 @@ def test_cli_sweep_out_writes_the_sweep_and_the_same_arrays(tmp_path, capsys):
     assert a["viable"].shape == (8, 7, 11, 3) and a["kernel"].any()
     assert all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.files)
     assert (tmp_path / "s" / "manifest.json").is_file()
+    small = ["--out", str(tmp_path / "c.npz"), "--sweep-out", str(tmp_path / "s"), "--next-state-float32"]
+    assert main(["viability", *grid, *small]) == 0  # resumed: the same sweep
+    c = np.load(tmp_path / "c.npz")
+    assert c["next_state"].dtype == np.float32
+    assert all(np.array_equal(a[k], c[k]) for k in ("failed", "status", "viable", "kernel", "measure"))
     capsys.readouterr()
+
+
+def test_cli_grounds_compares_the_three_policies(tmp_path, capsys):
+    """``--grounds``: the table of the three policies, the figure, the arrays and the JSON summary
+    are those of ``slipmaps.robust_viability`` on the same grid."""
+    grid = ["--heights", "0.8", "1.4", "5", "--speeds", "3", "6", "5", "--angles-deg", "10", "40", "7"]
+    grid += ["--k-d-grid", "10000", "40000", "3", "--grounds", "-0.05", "0.05", "3"]
+    fig, arrays = tmp_path / "g.png", tmp_path / "g.npz"
+    assert main(["viability", *grid, "--figure", str(fig), "--out", str(arrays), "--no-progress"]) == 0
+    out = capsys.readouterr().out
+    assert all(p in out for p in ("constant", "one-stage", "two-stage")) and fig.stat().st_size > 0
+    rs = slipmaps.robust_viability(
+        "exact",
+        slipmaps.HUMAN_RUNNER,
+        apex_height=np.linspace(0.8, 1.4, 5),
+        apex_speed=np.linspace(3, 6, 5),
+        touchdown_angle=np.radians(np.linspace(10, 40, 7)),
+        k_d=np.linspace(10000, 40000, 3),
+        ground=np.linspace(-0.05, 0.05, 3),
+    )
+    with np.load(arrays) as saved:
+        assert saved["action_k_d"].tolist() == [10000.0, 20000.0, 25000.0, 40000.0]  # k_c added
+        for p in ("constant", "one_stage", "two_stage"):
+            assert np.array_equal(saved[f"{p}_kernel"], rs.policies[p.replace("_", "-")].kernel)
+    assert main(["viability", *grid, "--no-figure", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["summary"]["two-stage"] == rs.policies["two-stage"].summary()
 
 
 @pytest.mark.parametrize(
@@ -425,6 +597,8 @@ def test_cli_sweep_out_writes_the_sweep_and_the_same_arrays(tmp_path, capsys):
         (["--energy", "1877", "--k-d-grid", "8000", "9000", "2"], "changes the energy"),
         (["--scheduler", "local:2"], "give --sweep-out too"),
         (["--vibly", "--sweep-out", "sw"], "--sweep-out needs a (height, speed) grid"),
+        (["--speeds", "1", "2", "3", "--grounds", "-0.1", "0.1", "3"], "--grounds needs"),
+        (["--next-state-float32"], "give --sweep-out too"),
     ],
 )
 def test_cli_user_errors_are_one_line_and_exit_2(tmp_path, capsys, monkeypatch, argv, words):

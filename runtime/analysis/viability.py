@@ -33,7 +33,9 @@ one viable action) and the measure of robustness of a state (the share of its ac
 The transition map is batches of the public apex-return API (one per k_d and chunk of states), so the
 exact map on vibly's SLIP demo grid (28,980 pairs) takes 0.45 s once compiled, on 2 busy cores
 (docs/viability.md); with the same results its steps run as a resumable sweep, also on Dask
-(``slipmaps.viability_sweep``, runtime/sweep/viability.py).
+(``slipmaps.viability_sweep``, runtime/sweep/viability.py). On a ground whose height is unknown at
+the apex, with k_d chosen at the apex or at the bottom: ``slipmaps.robust_viability``
+(:mod:`.viability_robust`).
 """
 
 from __future__ import annotations
@@ -56,7 +58,8 @@ class ViableSet:
     """A viability study on a grid (``slipmaps.viability``): arrays over states (S) or states x actions (Q).
 
     ``failed`` (Q, bool: the step fails), ``status`` (Q, int8 :class:`~slipmaps.Status` codes; OK
-    where only the next speed failed), ``next_state`` (Q x state dims, NaN where failed), ``viable``
+    where only the next speed failed), ``next_state`` (Q x state dims, NaN where failed; float64, or
+    float32 from ``viability_sweep(..., next_state_dtype="float32")``), ``viable``
     (Q_V), ``kernel`` (S_V), ``measure`` (S, the share of viable actions), ``states`` and ``actions``
     (the grids by name), ``energy`` [J] or None, ``map``, ``params``, ``options``, ``outside``,
     ``rounds`` of the fixed-point iteration, ``seconds`` (``map``: the steps, ``kernel``: the
@@ -320,14 +323,17 @@ def checked(
 
 
 def from_transition(
-    call, params: SlipParams, grids: Grids, tm, outside: str, ground: float = 0.0
+    call, params: SlipParams, grids: Grids, tm, outside: str, ground: float = 0.0, cell=None
 ) -> ViableSet:
-    """The study of a computed transition map ``tm``: its cells, the fixed point and the measure."""
+    """The study of a computed transition map ``tm``: its cells (``cell``, when given, the cells of
+    its next states already computed: :func:`.viability_kernel.cells`), the fixed point and the
+    measure."""
     import time
 
     start = time.perf_counter()
     state_grids = list(grids.states.values())
-    cell = cells(tm.next_state, tm.failed, state_grids)
+    if cell is None:
+        cell = cells(tm.next_state, tm.failed, state_grids)
     k = viable_set(tm.failed, cell, len(state_grids), outside)
     seconds = {"map": tm.seconds, "kernel": time.perf_counter() - start}
     return ViableSet(

@@ -14,10 +14,14 @@ of the energy's height, angles 0 ... 60 deg in 121 steps.
 Prints the sizes, the kernel's extent and where the measure peaks (``--json``: the summary and a row
 per state), writes a figure (the viable set as an image, the kernel and the measure beside it;
 ``--figure PATH``, default ``slipmaps_viability.png``; ``--no-figure``) and with ``--out PATH.npz``
-every array. ``--sweep-out DIR`` computes the steps of a (height, speed) grid as a resumable sweep
-into DIR (:func:`slipmaps.viability_sweep`), ``--scheduler local:N`` on a local Dask cluster. Paths
-are checked before any work, and so is the memory the grid needs. Exit status: 0 done, 2 a user
-error (one line on standard error), 130 interrupted.
+every array. ``--grounds MIN MAX N`` (with ``--speeds`` and ``--k-d-grid``): the ground under the
+touchdown is one of these heights [m], unknown at the apex; the kernels and shares of viable
+angles with k_d = k_c, k_d chosen at the apex and k_d chosen at the bottom
+(:func:`slipmaps.robust_viability`). ``--sweep-out DIR`` computes the steps of a (height, speed)
+grid as a resumable sweep into DIR (:func:`slipmaps.viability_sweep`), ``--scheduler local:N`` on a
+local Dask cluster, ``--next-state-float32`` holding the next states in half the memory. Paths are
+checked before any work, and so is the memory the grid needs. Exit status: 0 done, 2 a user error
+(one line on standard error), 130 interrupted.
 """
 
 from __future__ import annotations
@@ -83,6 +87,15 @@ def add_parser(sub) -> argparse.ArgumentParser:
         help="a next state beyond the grid: not viable (fail, default) or judged by the edge node "
         "(edge, vibly)",
     )
+    r = p.add_argument_group("on an unknown ground (a grid with --speeds and --k-d-grid)")
+    r.add_argument(
+        "--grounds",
+        type=_grid_arg,
+        nargs=3,
+        metavar=("MIN", "MAX", "N"),
+        help="touchdown ground heights [m], unknown at the apex: the kernels with k_d = k_c, k_d chosen "
+        "at the apex and k_d chosen at the bottom (slipmaps.robust_viability)",
+    )
     w = p.add_argument_group("on the sweep machinery (a grid with --speeds)")
     w.add_argument(
         "--sweep-out",
@@ -95,6 +108,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
         default=None,
         help="where the sweep's chunks run: inprocess (default), local:N (a local Dask cluster) or a "
         "dask scheduler address",
+    )
+    w.add_argument(
+        "--next-state-float32",
+        action="store_true",
+        help="hold the next states as float32 (half the largest array; the same sets)",
     )
     p.add_argument("--figure", default="slipmaps_viability.png", help="the figure (default %(default)s)")
     p.add_argument("--no-figure", action="store_true", help="do not write the figure")
@@ -189,6 +207,55 @@ def _table(vs) -> str:
     return "\n".join(lines)
 
 
+def _robust_table(rs) -> str:
+    from ..analysis.viability_robust import POLICIES
+
+    s = rs.summary()
+    lines = [
+        f"map {rs.map}; {s['states']} states (apex height x speed), {rs.touchdown_angle.size} angles, "
+        f"k_d {', '.join(f'{k:.6g}' for k in rs.k_d)} N/m; ground unknown in "
+        f"{', '.join(f'{g:.4g}' for g in rs.ground)} m; steps {rs.seconds['map']:.3g} s, kernels "
+        f"{rs.seconds['kernel']:.3g} s",
+        "share of viable touchdown angles per state: the mean over the kernel, the largest",
+        f"{'policy':<10} {'kernel states':>13} {'mean':>7} {'largest':>8} {'rounds':>6}",
+    ]
+    for name in POLICIES:
+        p = s[name]
+        lines.append(
+            f"{name:<10} {p['kernel_states']:>13} {p['angles_in_kernel']:>7.4f} {p['angles_max']:>8.4f}"
+            f" {p['rounds']:>6}"
+        )
+    return "\n".join(lines)
+
+
+def _robust(args, name, params, kw, figure, out, progress) -> int:
+    """``--grounds``: :func:`slipmaps.robust_viability`, printed, drawn and written."""
+    from ..analysis.viability_robust import robust_viability
+    from ..api.paths import writing
+
+    if "apex_speed" not in kw or "k_d" not in kw:
+        raise ValueError("--grounds needs a (height, speed) grid and k_d: give --speeds and --k-d-grid")
+    if args.sweep_out is not None or "retraction_rate" in kw:
+        raise ValueError("--grounds takes no --sweep-out and no --retraction-rates")
+    kw = dict(kw)
+    kw.pop("ground")
+    rs = robust_viability(name, params, ground=_linspace("--grounds", args.grounds), progress=progress, **kw)
+    written = []
+    if figure:
+        written.append(str(rs.plot(figure)))
+    if out is not None:
+        with writing(out):
+            np.savez_compressed(out, **rs.arrays())
+        written.append(str(out))
+    if args.json:
+        print(json.dumps(rs.as_dict() | {"written": written}, indent=1))
+    else:
+        print(_robust_table(rs))
+        for path in written:
+            print(f"wrote {path}")
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
     from ..analysis.viability import viability
     from ..api.paths import writable_file, writing
@@ -202,6 +269,10 @@ def run(args: argparse.Namespace) -> int:
     progress = False if args.no_progress else None
     if args.scheduler is not None and args.sweep_out is None:
         raise ValueError("--scheduler runs the sweep of --sweep-out DIR: give --sweep-out too")
+    if args.next_state_float32 and args.sweep_out is None:
+        raise ValueError("--next-state-float32 is the sweep's (--sweep-out DIR): give --sweep-out too")
+    if args.grounds is not None:
+        return _robust(args, name, params, kw, figure, out, progress)
     if args.sweep_out is not None:
         if "energy" in kw:
             raise ValueError(
@@ -211,7 +282,16 @@ def run(args: argparse.Namespace) -> int:
         from ..sweep.viability import viability_sweep
 
         out_dir = writable_dir("--sweep-out", args.sweep_out)
-        vs = viability_sweep(name, params, out=out_dir, scheduler=args.scheduler, progress=progress, **kw)
+        dtype = "float32" if args.next_state_float32 else "float64"
+        vs = viability_sweep(
+            name,
+            params,
+            out=out_dir,
+            scheduler=args.scheduler,
+            next_state_dtype=dtype,
+            progress=progress,
+            **kw,
+        )
     else:
         vs = viability(name, params, progress=progress, **kw)
     written = []

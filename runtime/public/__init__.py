@@ -60,6 +60,8 @@ _EXPORTS = {
     "viability": "slipmaps.runtime.analysis.viability",
     "ViableSet": "slipmaps.runtime.analysis.viability",
     "viability_sweep": "slipmaps.runtime.sweep.viability",
+    "robust_viability": "slipmaps.runtime.analysis.viability_robust",
+    "RobustSet": "slipmaps.runtime.analysis.viability_robust",
     "Result": "slipmaps.runtime.api.results",
     "BatchResult": "slipmaps.runtime.api.results",
     "Status": "slipmaps.generated.status",

@@ -133,15 +133,18 @@ def _csv_body_python(chunk: Chunk) -> bytes:
     return (text + "\n").encode() if text else b""
 
 
-def read(path: str | Path) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    """A sweep file (a chunk or a combined one) as (columns by name, unit by column name)."""
+def read(
+    path: str | Path, columns: Sequence[str] | None = None
+) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    """A sweep file (a chunk or a combined one) as (columns by name, unit by column name);
+    ``columns``: only these (a Parquet file decodes no other)."""
     path = Path(path)
     if path.suffix == ".parquet":
         _pyarrow("Parquet files")
         import pyarrow as pa
         import pyarrow.parquet as pq
 
-        table = pq.read_table(path)
+        table = pq.read_table(path, columns=None if columns is None else list(columns))
         units = {f.name: (f.metadata or {}).get(b"unit", b"").decode() for f in table.schema}
         cols = {}
         for name in table.column_names:
@@ -164,6 +167,8 @@ def read(path: str | Path) -> tuple[dict[str, np.ndarray], dict[str, str]]:
     data = list(zip(*rows, strict=True)) if rows else [()] * len(header)
     cols = {}
     for name, values in zip(header, data, strict=True):
+        if columns is not None and name not in columns:
+            continue
         if name == "status":
             cols[name] = np.array(values, dtype=np.int64)
         elif name == "status_name":

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
@@ -149,10 +149,11 @@ def _chunk_paths(out: str | Path) -> list[Path]:
     return [p for i in range(manifest["chunks"]) if (p := out / pattern.format(index=i)).exists()]
 
 
-def iter_sweep(out: str | Path) -> Iterator[dict[str, np.ndarray]]:
-    """The written chunks of the sweep in ``out``, in row order, one dict of columns at a time."""
+def iter_sweep(out: str | Path, columns: Sequence[str] | None = None) -> Iterator[dict[str, np.ndarray]]:
+    """The written chunks of the sweep in ``out``, in row order, one dict of columns at a time
+    (``columns``: only these)."""
     for p in _chunk_paths(out):
-        yield read(p)[0]
+        yield read(p, columns)[0]
 
 
 def read_sweep(out: str | Path, *, frame: bool = False):
