@@ -50,7 +50,7 @@ from ..api.validate import real_array
 from .viability_kernel import OUTSIDE, cells, viable_set
 from .viability_map import Grids, check_memory, speeds_on_energy, transition
 
-__all__ = ["ViableSet", "checked", "from_transition", "viability"]
+__all__ = ["ViableSet", "checked", "from_transition", "grid", "viability"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -147,7 +147,7 @@ class ViableSet:
             for i in range(self.kernel.size)
         ]
 
-        def grid(g):
+        def span(g):
             return {"min": float(g[0]), "max": float(g[-1]), "n": int(g.size)}
 
         return {
@@ -156,8 +156,8 @@ class ViableSet:
             "options": dict(self.options),
             "energy": self.energy,
             "outside": self.outside,
-            "states": {n: grid(g) for n, g in self.states.items()},
-            "actions": {n: grid(g) for n, g in self.actions.items()},
+            "states": {n: span(g) for n, g in self.states.items()},
+            "actions": {n: span(g) for n, g in self.actions.items()},
             "summary": self.summary(),
             "seconds": dict(self.seconds),
             "per_state": rows,
@@ -200,7 +200,9 @@ class ViableSet:
         return figure(self, path)
 
 
-def _grid(name: str, values, positive: bool = False) -> np.ndarray:
+def grid(name: str, values, positive: bool = False) -> np.ndarray:
+    """``values`` as a 1-D float64 grid: non-empty, finite, strictly increasing (and positive when
+    asked); ValueError naming ``name`` otherwise."""
     arr = np.atleast_1d(real_array(name, values)).astype(np.float64)
     if arr.ndim != 1 or arr.size == 0:
         raise ValueError(f"{name} must be a non-empty 1-D grid, got shape {arr.shape}")
@@ -216,7 +218,7 @@ def _grid(name: str, values, positive: bool = False) -> np.ndarray:
 def _grids(params, apex_height, touchdown_angle, apex_speed, energy, k_d, retraction_rate) -> Grids:
     if (apex_speed is None) == (energy is None):
         raise ValueError("give either apex_speed (a grid: the state is height and speed) or energy (J)")
-    states = {"apex_height": _grid("apex_height", apex_height)}
+    states = {"apex_height": grid("apex_height", apex_height)}
     if np.any(states["apex_height"] < 0):
         raise ValueError("apex_height must not be negative")
     if energy is not None:
@@ -239,16 +241,16 @@ def _grids(params, apex_height, touchdown_angle, apex_speed, energy, k_d, retrac
                 "(E / (m g_f), where the speed is 0)"
             )
     else:
-        states["apex_speed"] = _grid("apex_speed", apex_speed)
+        states["apex_speed"] = grid("apex_speed", apex_speed)
         if np.any(states["apex_speed"] < 0):
             raise ValueError("apex_speed must not be negative (forward running)")
-    actions = {"touchdown_angle": _grid("touchdown_angle", touchdown_angle)}
+    actions = {"touchdown_angle": grid("touchdown_angle", touchdown_angle)}
     if np.any(np.abs(actions["touchdown_angle"]) >= math.pi / 2):
         raise ValueError("touchdown_angle must lie in (-pi/2, pi/2)")
     if k_d is not None:
-        actions["k_d"] = _grid("k_d", k_d, positive=True)
+        actions["k_d"] = grid("k_d", k_d, positive=True)
     if retraction_rate is not None:
-        actions["retraction_rate"] = _grid("retraction_rate", retraction_rate)
+        actions["retraction_rate"] = grid("retraction_rate", retraction_rate)
         bound = math.sqrt(params.g_f / params.q_r_td)  # the maps' domain of the rate (flight kernels)
         if np.any(np.abs(actions["retraction_rate"]) > bound):
             raise ValueError(

@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..api.params import SlipParams
-from .viability import _grid, checked
+from .viability import checked, grid
 from .viability_kernel import cells, steps_into, viable_set
 from .viability_map import Grids, check_memory, transition
 
@@ -123,7 +123,7 @@ class RobustSet:
         }
 
     def as_dict(self) -> dict:
-        def grid(g):
+        def span(g):
             return {"min": float(g[0]), "max": float(g[-1]), "n": int(g.size)}
 
         return {
@@ -131,8 +131,8 @@ class RobustSet:
             "params": self.params.as_dict(),
             "options": dict(self.options),
             "outside": self.outside,
-            "states": {n: grid(g) for n, g in self.states.items()},
-            "touchdown_angle": grid(self.touchdown_angle),
+            "states": {n: span(g) for n, g in self.states.items()},
+            "touchdown_angle": span(self.touchdown_angle),
             "summary": self.summary(),
             "seconds": dict(self.seconds),
         }
@@ -177,8 +177,8 @@ def robust_viability(
     ground under the apex], all 1-D increasing grids; ``outside`` and ``options`` as in
     :func:`slipmaps.viability`. Returns a :class:`RobustSet` with the policies constant,
     one-stage and two-stage."""
-    k_d = np.union1d(_grid("k_d", k_d, positive=True), [params.k_c])
-    grounds = _grid("ground", ground)
+    k_d = np.union1d(grid("k_d", k_d, positive=True), [params.k_c])
+    grounds = grid("ground", ground)
     grids, call = checked(
         name, params, apex_height, touchdown_angle, apex_speed, None, k_d, None, outside, options
     )
