@@ -42,7 +42,7 @@ import numpy as np
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
-from .calls import Call
+from .calls import Call, Columns
 from .frames import to_arrow, to_pandas
 from .inputs import apex_signature
 from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
@@ -253,8 +253,7 @@ def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) 
     call = Call.of(name, params, options)
     arr = state_rows(params, touchdowns)
     n = arr.shape[0]
-    cols = {a: np.ascontiguousarray(arr[:, j]) for j, a in enumerate(call.spec("stance_jacobian").x)}
-    out, status = call.rows("stance_jacobian", cols, {}, n)
+    out, status = call.rows("stance_jacobian", Columns(arr, call.spec("stance_jacobian").x), {}, n)
     return _batch(call, "stance_jacobian", out, status, (n,))
 
 
@@ -263,6 +262,6 @@ def apex_return_jacobian_batch(name: str, params: SlipParams, given: dict, **opt
     """:func:`apex_return_jacobian` over arrays (broadcast against each other), in parallel; a
     status per row; the result has the broadcast shape."""
     call = Call.of(name, params, options)
-    cols, shape = apex_rows(given)
-    out, status = call.rows("apex_return_jacobian", cols, {}, int(np.prod(shape)))
+    rows, inputs, shape = apex_rows(given)
+    out, status = call.rows("apex_return_jacobian", rows, inputs, math.prod(shape))
     return _batch(call, "apex_return_jacobian", out, status, shape)

@@ -122,17 +122,22 @@ def stance_batch(
     return BatchResult(call.info.name, "stance", call.spec("stance").outputs, out, status, (n,))
 
 
-def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], tuple[int, ...]]:
-    """The apex-return inputs (by API name) broadcast against each other, flattened into C-contiguous
-    float64 columns by kernel argument, and their broadcast shape."""
-    parts = np.broadcast_arrays(*(real_array(key, x) for key, x in given.items()))
-    shape = parts[0].shape
-    n = int(np.prod(shape))
-    cols = {
-        APEX_INPUTS[k]["arg"]: np.ascontiguousarray(p.reshape(n), dtype=np.float64)
-        for k, p in zip(given, parts, strict=True)
+def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tuple[int, ...]]:
+    """The apex-return inputs (by API name) broadcast against each other: ``(rows, inputs, shape)``,
+    by kernel argument ``rows`` the inputs given as arrays, flattened to the rows of the broadcast
+    ``shape``, and ``inputs`` those given as numbers (one value for every row: not copied per
+    row)."""
+    arrays = {APEX_INPUTS[k]["arg"]: real_array(k, x) for k, x in given.items()}
+    shapes = {x.shape for x in arrays.values() if x.ndim}
+    shape = next(iter(shapes)) if len(shapes) == 1 else np.broadcast_shapes(*shapes)
+    n = math.prod(shape)
+    rows = {
+        a: (x if x.shape == shape else np.broadcast_to(x, shape)).reshape(n)
+        for a, x in arrays.items()
+        if x.ndim
     }
-    return cols, shape
+    inputs = {a: float(x) for a, x in arrays.items() if not x.ndim}
+    return rows, inputs, shape
 
 
 @apex_signature
@@ -144,8 +149,8 @@ def apex_return_batch(
     The result's columns have the broadcast shape of the inputs.
     """
     call = Call.of(name, params, options)
-    cols, shape = apex_rows(given)
-    out, status = call.rows("apex_return", cols, {}, int(np.prod(shape)), progress)
+    rows, inputs, shape = apex_rows(given)
+    out, status = call.rows("apex_return", rows, inputs, math.prod(shape), progress)
     return BatchResult(call.info.name, "apex_return", call.spec("apex_return").outputs, out, status, shape)
 
 
