@@ -33,6 +33,8 @@ def check_params(params: object) -> SlipParams:
 def real(name: str, value: object) -> float:
     """A finite float; TypeError when ``value`` is not a real number (a string, bytes, a bool...),
     ValueError when it is not finite, both naming ``name`` and the value."""
+    if type(value) is float and math.isfinite(value):  # the common case, one check
+        return value
     if not is_real(value):
         raise NotANumber(f"{name} must be a real number, got {type(value).__name__} {value!r}")
     x = float(value)  # type: ignore[arg-type]
