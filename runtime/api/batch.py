@@ -72,6 +72,9 @@ def run_rows(rows, X: np.ndarray, P: np.ndarray, OUT: np.ndarray, STATUS: np.nda
     float64, one row per call of the kernel; ``P`` (1, k) for one parameter record, (n, k) for one
     per row; ``OUT`` and ``STATUS`` one row each), by :func:`run_blocks`."""
     shared = P.shape[0] == 1
+    if X.shape[0] <= FIRST_BLOCK:  # one block, here: what run_blocks would do, without its timing
+        rows(X, P, OUT, STATUS)
+        return
 
     def block(lo, hi):
         rows(X[lo:hi], P if shared else P[lo:hi], OUT[lo:hi], STATUS[lo:hi])

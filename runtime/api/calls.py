@@ -99,11 +99,13 @@ def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int
     kernel reads it from ``x`` (derive/lower.py unpacks from ``p`` only the names ``x`` lacks)."""
     if isinstance(rows, Columns) and rows.names == tuple(spec.x):
         X = np.ascontiguousarray(rows.matrix, dtype=np.float64)  # read only by the kernel
+    elif n == 1:  # one row from a list: a column assignment per input costs more than the row
+        X = np.array([[float(rows[a][0]) if a in rows else inputs[a] for a in spec.x]])
     else:
         X = np.empty((n, len(spec.x)))
         for j, a in enumerate(spec.x):
             X[:, j] = rows[a] if a in rows else inputs[a]
-    varying = [(j, f) for j, f in enumerate(spec.p) if f in rows and f not in spec.x]
+    varying = [(spec.p.index(f), f) for f in rows if f in spec.p and f not in spec.x]
     if not varying:
         return X, record[None, :]
     P = np.repeat(record[None, :], n, axis=0)

@@ -127,16 +127,21 @@ def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tup
     by kernel argument ``rows`` the inputs given as arrays, flattened to the rows of the broadcast
     ``shape``, and ``inputs`` those given as numbers (one value for every row: not copied per
     row)."""
-    arrays = {APEX_INPUTS[k]["arg"]: real_array(k, x) for k, x in given.items()}
-    shapes = {x.shape for x in arrays.values() if x.ndim}
+    arrays, inputs = {}, {}
+    for key, x in given.items():
+        arg = APEX_INPUTS[key]["arg"]
+        if type(x) is float:  # a number (the defaults among them): no array
+            inputs[arg] = x
+            continue
+        arr = real_array(key, x)
+        if arr.ndim:
+            arrays[arg] = arr
+        else:
+            inputs[arg] = float(arr)
+    shapes = {x.shape for x in arrays.values()}
     shape = next(iter(shapes)) if len(shapes) == 1 else np.broadcast_shapes(*shapes)
     n = math.prod(shape)
-    rows = {
-        a: (x if x.shape == shape else np.broadcast_to(x, shape)).reshape(n)
-        for a, x in arrays.items()
-        if x.ndim
-    }
-    inputs = {a: float(x) for a, x in arrays.items() if not x.ndim}
+    rows = {a: (x if x.shape == shape else np.broadcast_to(x, shape)).reshape(n) for a, x in arrays.items()}
     return rows, inputs, shape
 
 
