@@ -50,7 +50,7 @@ from ..api.validate import real_array
 from .viability_kernel import OUTSIDE, cells, viable_set
 from .viability_map import Grids, check_memory, speeds_on_energy, transition
 
-__all__ = ["ViableSet", "checked", "from_transition", "grid", "viability"]
+__all__ = ["ViableSet", "checked", "from_transition", "grid", "grid_span", "viability"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -147,17 +147,14 @@ class ViableSet:
             for i in range(self.kernel.size)
         ]
 
-        def span(g):
-            return {"min": float(g[0]), "max": float(g[-1]), "n": int(g.size)}
-
         return {
             "map": self.map,
             "params": self.params.as_dict(),
             "options": dict(self.options),
             "energy": self.energy,
             "outside": self.outside,
-            "states": {n: span(g) for n, g in self.states.items()},
-            "actions": {n: span(g) for n, g in self.actions.items()},
+            "states": {n: grid_span(g) for n, g in self.states.items()},
+            "actions": {n: grid_span(g) for n, g in self.actions.items()},
             "summary": self.summary(),
             "seconds": dict(self.seconds),
             "per_state": rows,
@@ -198,6 +195,11 @@ class ViableSet:
         from .viability_figure import figure
 
         return figure(self, path)
+
+
+def grid_span(g: np.ndarray) -> dict:
+    """A 1-D grid as JSON: its first and last values and its length."""
+    return {"min": float(g[0]), "max": float(g[-1]), "n": int(g.size)}
 
 
 def grid(name: str, values, positive: bool = False) -> np.ndarray:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["figure"]
+__all__ = ["figure", "state_image"]
 
 _UNITS = {
     "apex_height": "m",
@@ -43,7 +43,7 @@ def figure(vs, path):
     import matplotlib.pyplot as plt
     from matplotlib.colors import ListedColormap
 
-    from ..api.paths import writing
+    from ..api.paths import save_figure
 
     title = f"viability of {vs.map}: {vs.kernel.sum()} of {vs.kernel.size} states in the kernel"
     if vs.energy is not None:
@@ -87,16 +87,19 @@ def figure(vs, path):
             (axes[0], safe, "share of actions that do not fail"),
             (axes[1], vs.measure, "measure (share of viable actions)"),
         ):
-            mesh = ax.pcolormesh(v, h, data, shading="nearest", cmap="viridis", vmin=0, rasterized=True)
-            if vs.kernel.any() and not vs.kernel.all():
-                ax.contour(v, h, vs.kernel.astype(float), levels=[0.5], colors="w", linewidths=1.0)
+            mesh = state_image(ax, v, h, data, vs.kernel)
             fig.colorbar(mesh, ax=ax, label=label)
             ax.set_xlabel(_label("apex_speed"))
             ax.set_ylabel(_label("apex_height"))
     fig.suptitle(title, fontsize=10)
-    try:
-        with writing(path):
-            fig.savefig(path, dpi=110)
-    finally:
-        plt.close(fig)
+    save_figure(fig, path)
     return path
+
+
+def state_image(ax, v, h, data, kernel, vmax=None):
+    """``data`` over apex speed ``v`` and height ``h`` as an image on ``ax``, the outline of
+    ``kernel`` (bool over the same states) on it in white; returns the image for a colour bar."""
+    mesh = ax.pcolormesh(v, h, data, shading="nearest", cmap="viridis", vmin=0, vmax=vmax, rasterized=True)
+    if kernel.any() and not kernel.all():
+        ax.contour(v, h, kernel.astype(float), levels=[0.5], colors="w", linewidths=1.0)
+    return mesh

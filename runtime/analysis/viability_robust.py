@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..api.params import SlipParams
-from .viability import checked, grid
+from .viability import checked, grid, grid_span
 from .viability_kernel import cells, steps_into, viable_set
 from .viability_map import Grids, check_memory, transition
 
@@ -123,16 +123,13 @@ class RobustSet:
         }
 
     def as_dict(self) -> dict:
-        def span(g):
-            return {"min": float(g[0]), "max": float(g[-1]), "n": int(g.size)}
-
         return {
             "map": self.map,
             "params": self.params.as_dict(),
             "options": dict(self.options),
             "outside": self.outside,
-            "states": {n: span(g) for n, g in self.states.items()},
-            "touchdown_angle": span(self.touchdown_angle),
+            "states": {n: grid_span(g) for n, g in self.states.items()},
+            "touchdown_angle": grid_span(self.touchdown_angle),
             "summary": self.summary(),
             "seconds": dict(self.seconds),
         }

@@ -21,26 +21,19 @@ def figure(rs, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from ..api.paths import writing
+    from ..api.paths import save_figure
+    from .viability_figure import state_image
 
     h, v = rs.states["apex_height"], rs.states["apex_speed"]
     top = max(float(p.angles.max()) for p in rs.policies.values()) or 1.0
     fig, axes = plt.subplots(1, len(rs.policies), figsize=(13, 4.2), constrained_layout=True, sharey=True)
     for ax, (name, p) in zip(axes, rs.policies.items(), strict=True):
-        mesh = ax.pcolormesh(
-            v, h, p.angles, shading="nearest", cmap="viridis", vmin=0, vmax=top, rasterized=True
-        )
-        if p.kernel.any() and not p.kernel.all():
-            ax.contour(v, h, p.kernel.astype(float), levels=[0.5], colors="w", linewidths=1.0)
+        mesh = state_image(ax, v, h, p.angles, p.kernel, vmax=top)
         ax.set_title(f"{_TITLES[name]}: {int(p.kernel.sum())} states", fontsize=9)
         ax.set_xlabel("apex speed [m/s]")
     axes[0].set_ylabel("apex height above the ground [m]")
     fig.colorbar(mesh, ax=axes, label="share of viable touchdown angles")
     cm = ", ".join(f"{100 * g:+.3g}" for g in rs.ground)
     fig.suptitle(f"viability of {rs.map} on an unknown ground (touchdown ground {cm} cm)", fontsize=10)
-    try:
-        with writing(path):
-            fig.savefig(path, dpi=110)
-    finally:
-        plt.close(fig)
+    save_figure(fig, path)
     return path

@@ -231,7 +231,6 @@ def _robust_table(rs) -> str:
 def _robust(args, name, params, kw, figure, out, progress) -> int:
     """``--grounds``: :func:`slipmaps.robust_viability`, printed, drawn and written."""
     from ..analysis.viability_robust import robust_viability
-    from ..api.paths import writing
 
     if "apex_speed" not in kw or "k_d" not in kw:
         raise ValueError("--grounds needs a (height, speed) grid and k_d: give --speeds and --k-d-grid")
@@ -240,17 +239,25 @@ def _robust(args, name, params, kw, figure, out, progress) -> int:
     kw = dict(kw)
     kw.pop("ground")
     rs = robust_viability(name, params, ground=_linspace("--grounds", args.grounds), progress=progress, **kw)
+    return _emit(rs, _robust_table, args.json, figure, out)
+
+
+def _emit(study, table, as_json: bool, figure, out) -> int:
+    """A study's figure and arrays written where asked, then its JSON or ``table(study)`` printed
+    with the paths written."""
+    from ..api.paths import writing
+
     written = []
     if figure:
-        written.append(str(rs.plot(figure)))
+        written.append(str(study.plot(figure)))
     if out is not None:
         with writing(out):
-            np.savez_compressed(out, **rs.arrays())
+            np.savez_compressed(out, **study.arrays())
         written.append(str(out))
-    if args.json:
-        print(json.dumps(rs.as_dict() | {"written": written}, indent=1))
+    if as_json:
+        print(json.dumps(study.as_dict() | {"written": written}, indent=1))
     else:
-        print(_robust_table(rs))
+        print(table(study))
         for path in written:
             print(f"wrote {path}")
     return 0
@@ -258,7 +265,7 @@ def _robust(args, name, params, kw, figure, out, progress) -> int:
 
 def run(args: argparse.Namespace) -> int:
     from ..analysis.viability import viability
-    from ..api.paths import writable_file, writing
+    from ..api.paths import writable_file
     from .args import image_path
 
     figure = None if args.no_figure else image_path("--figure", args.figure, example="slipmaps_viability")
@@ -294,19 +301,4 @@ def run(args: argparse.Namespace) -> int:
         )
     else:
         vs = viability(name, params, progress=progress, **kw)
-    written = []
-    if figure:
-        written.append(str(vs.plot(figure)))
-    if out is not None:
-        with writing(out):
-            np.savez_compressed(out, **vs.arrays())
-        written.append(str(out))
-    if args.json:
-        data = vs.as_dict()
-        data["written"] = written
-        print(json.dumps(data, indent=1))
-    else:
-        print(_table(vs))
-        for path in written:
-            print(f"wrote {path}")
-    return 0
+    return _emit(vs, _table, args.json, figure, out)
