@@ -46,13 +46,14 @@ def _pool(size: int) -> ThreadPoolExecutor:
 def run_blocks(block, n: int) -> None:
     """``block(lo, hi)`` over the rows 0..n in contiguous blocks (each releasing the GIL): the first
     block here, the rest in blocks on threads when that pays (module docstring)."""
-    first = min(n, FIRST_BLOCK)
-    start = time.perf_counter()
-    if first:
-        block(0, first)
-    rest = n - first
-    if rest == 0:
+    if n <= FIRST_BLOCK:  # one block, here: nothing to time
+        if n:
+            block(0, n)
         return
+    first = FIRST_BLOCK
+    start = time.perf_counter()
+    block(0, first)
+    rest = n - first
     threads = min(_threads(), rest // FIRST_BLOCK)
     per_row = (time.perf_counter() - start) / first
     if threads < 2 or per_row * rest < THREADED_SECONDS:
@@ -72,9 +73,6 @@ def run_rows(rows, X: np.ndarray, P: np.ndarray, OUT: np.ndarray, STATUS: np.nda
     float64, one row per call of the kernel; ``P`` (1, k) for one parameter record, (n, k) for one
     per row; ``OUT`` and ``STATUS`` one row each), by :func:`run_blocks`."""
     shared = P.shape[0] == 1
-    if X.shape[0] <= FIRST_BLOCK:  # one block, here: what run_blocks would do, without its timing
-        rows(X, P, OUT, STATUS)
-        return
 
     def block(lo, hi):
         rows(X[lo:hi], P if shared else P[lo:hi], OUT[lo:hi], STATUS[lo:hi])

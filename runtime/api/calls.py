@@ -117,9 +117,6 @@ def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int
 #: The generated kernels' backend (stateless).
 KERNELS = KernelBackend()
 
-#: Every status by its code (a dict lookup where ``Status(code)`` runs the enum's constructor).
-_STATUSES = {int(s): s for s in Status}
-
 
 _FUNCTIONS: dict = {}
 
@@ -202,10 +199,7 @@ class Call:
         when it has a more specific one than the status's (the solve_ivp reference names the stage
         and event that failed), else None."""
         res = self.backend.scalar(self, role, inputs)
-        status = _STATUSES.get(res[-1]) or Status(int(res[-1]))
-        if self.backend is KERNELS:  # its outputs are Python floats already (ndarray.tolist)
-            return status, res[:-1], None
-        return status, tuple(map(float, res[:-1])), getattr(res, "message", None)
+        return Status(int(res[-1])), tuple(map(float, res[:-1])), getattr(res, "message", None)
 
     def rows(self, role: str, rows: Mapping[str, np.ndarray], inputs: Mapping[str, float], n: int, show=None):
         """``(out, status)`` of the role over ``n`` rows (:meth:`Backend.rows`)."""
