@@ -8,6 +8,13 @@ the copy's, so that ``slipmaps generate`` finds the copy as its checkout (``deri
 command runs in a subprocess with that site first on PYTHONPATH (before the editable install of the
 real checkout) and numba's cache in a directory of the test's (NUMBA_CACHE_DIR): nothing is written
 into the real checkout or its cache.
+
+That cache starts with a copy of this process's entries for the generated modules
+(:meth:`Checkout.seed`): a copied file keeps its modification time, so numba's stamp check (the
+source's time and size) accepts the entries of every generated module the page leaves unchanged
+(the exact simulator's, say: about 35 s of CPU to compile) and recompiles the ones ``slipmaps
+generate`` rewrote, as in any checkout. A generated module's header hashes the generated modules it
+imports, so a module whose callees changed is rewritten too.
 """
 
 from __future__ import annotations
@@ -60,13 +67,31 @@ class Checkout:
 
     def __init__(self, root: Path, site: Path, cache: Path):
         self.root = root
+        self.cache = cache
+        self.site = site_of(root, site)
         self.env = {
             **os.environ,
-            "PYTHONPATH": str(site_of(root, site)),
+            "PYTHONPATH": str(self.site),
             "NUMBA_CACHE_DIR": str(cache),
             "PYTHONHASHSEED": "0",
             "MPLBACKEND": "Agg",
         }
+
+    def seed(self) -> Path:
+        """Copy this process's numba cache entries of ``slipmaps.generated`` into the folder numba
+        uses for the copy's generated modules (numba's ``NUMBA_CACHE_DIR`` layout: the folder's name
+        and a hash of its path, the path as the copy's site names it); returns that folder."""
+        import slipmaps.generated.flight as flight
+        from numba.core.caching import UserProvidedCacheLocator
+
+        ours = next(v for v in vars(flight).values() if hasattr(v, "_cache") and hasattr(v, "py_func"))
+        source = Path(ours._cache._cache_path)
+        module = self.site / "slipmaps" / "generated" / "flight.py"
+        dest = self.cache / UserProvidedCacheLocator.get_suitable_cache_subpath(str(module))
+        dest.mkdir(parents=True, exist_ok=True)
+        for f in source.glob("*.nb[ic]"):
+            shutil.copyfile(f, dest / f.name)
+        return dest
 
     def _run(self, argv: list[str]) -> str:
         done = subprocess.run(

@@ -31,13 +31,16 @@ def _value(values: Mapping[str, float], name: str) -> float:
 
 
 @cache
-def declared() -> dict[tuple[str, str], Kernel]:
-    """Every generated kernel's declaration by (module, name)."""
-    return {(k.module, k.name): k for mod in generate.modules() for k in mod.kernels()}
+def declared(jacobians: bool = True) -> dict[tuple[str, str], Kernel]:
+    """Every generated kernel's declaration by (module, name); without the Jacobians' modules unless
+    ``jacobians`` (their derivation is a third of a build)."""
+    mods = generate.modules() if jacobians else generate.primal_modules()
+    return {(k.module, k.name): k for mod in mods for k in mod.kernels()}
 
 
 def declaration(module: str, name: str) -> Kernel:
-    return declared()[(module.rsplit(".", 1)[-1], name)]
+    module = module.rsplit(".", 1)[-1]
+    return declared(jacobians=module.endswith("_jacobian"))[(module, name)]
 
 
 def function(kernel: Kernel):

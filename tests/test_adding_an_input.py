@@ -84,6 +84,8 @@ def followed(tmp_path_factory) -> dict:
     base = tmp_path_factory.mktemp("input-tutorial")
     copy = copy_tracked(base / "checkout")
     here = Checkout(copy, base / "site", base / "numba")
+    seeded = here.seed()
+    before = {f.name: f.stat().st_mtime_ns for f in seeded.glob("*.nbi")}
     for mark in EDITS:
         done = subprocess.run(
             ["patch", "-p1", "--forward", "--no-backup-if-mismatch"],
@@ -96,6 +98,10 @@ def followed(tmp_path_factory) -> dict:
     results = {"generate": here.commands(STEPS["generate"][1])}
     results["use"] = here.python(STEPS["use"][1], _MEASURE)
     results["copy"] = copy
+    # numba used the seeded folder: the copy's compiles rewrote indexes there
+    results["rewritten"] = sorted(
+        f.name for f in seeded.glob("*.nbi") if before.get(f.name) != f.stat().st_mtime_ns
+    )
     return results
 
 
@@ -119,6 +125,11 @@ def test_the_input_is_every_maps_and_its_jacobians_column(followed):
 def test_a_negative_sole_is_refused_by_its_domain(followed):
     message = followed["use"]["negative"]
     assert message.startswith("sole") and "-0.01" in message, message
+
+
+def test_the_copy_compiled_into_the_seeded_cache(followed):
+    """tests/checkout.py seeds the copy's numba cache; the rewritten modules' kernels compiled there."""
+    assert any(name.startswith("geyer.") for name in followed["rewritten"]), followed["rewritten"]
 
 
 def test_only_the_two_edited_files_and_the_generated_ones_differ(followed):

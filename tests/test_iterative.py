@@ -5,7 +5,8 @@ Tolerances are measured (see each docstring).
 
 from __future__ import annotations
 
-import kernels
+import math
+
 import numpy as np
 import pytest
 import slipmaps
@@ -127,11 +128,20 @@ def test_pass_bound_is_enforced():
     p = HUMAN_RUNNER
     touchdown = dict(zip(("q_r_td", "q_rd_td", "q_th_td", "q_thd_td"), (1.0, -1.0, 0.4, -4.0), strict=True))
     base = {**touchdown, **p.values()}
-    stance = kernels.declaration("iterative", "iterative_stance_zeroth_geyer")  # zeroth: kernels per choice
-    assert iterative.iterative_stance_zeroth_geyer is kernels.function(stance)
-    nodes = {"nodes": 3.0, "tol": 0.0}  # the code of 4 nodes
-    assert kernels.invoke(stance, {**base, **nodes, "iterations": 100.0})[-1] == Status.OK
-    assert kernels.invoke(stance, {**base, **nodes, "iterations": 101.0})[-1] == Status.INVALID_INPUT
+    info = index.get("iterative")
+    spec = info.kernels_for(info.resolve({"zeroth": "geyer"}))["stance"]  # zeroth: kernels per choice
+    kernel = spec.functions()[0]
+    assert kernel is iterative.iterative_stance_zeroth_geyer
+
+    def status(**values) -> Status:
+        """The kernel's status, its layouts filled by the index's names."""
+        env = {**base, "nodes": 3.0, "tol": 0.0, **values}  # nodes: the code of 4 nodes
+        x = np.array([env[a] for a in spec.x])
+        p = np.array([env.get(f, math.nan) for f in spec.p])
+        return Status(kernel(x, p, np.empty(spec.width)))
+
+    assert status(iterations=100.0) == Status.OK
+    assert status(iterations=101.0) == Status.INVALID_INPUT
 
 
 # ----------------------------------------------------------------------------------------------

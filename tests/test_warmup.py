@@ -68,9 +68,10 @@ def test_the_kernel_jobs_are_the_kernels_and_types_the_tests_call():
             for role in warmup.CHOICE_ROLES:
                 spec = kernels[role]
                 assert f"{spec.module}:{spec.name}" in jobs or spec == m.kernels[role], (name, choice, role)
-    for name in warmup.JACOBIAN_BATCHES:
-        spec = index.get(name).kernels["apex_return_jacobian"]
-        assert [f for f, *_ in jobs[f"{spec.module}:{spec.name}_rows"]] == [spec.functions()[1]]
+    for m in index.maps():
+        for role in ("stance_jacobian", "apex_return_jacobian"):
+            spec = m.kernels[role]
+            assert [f for f, *_ in jobs[f"{spec.module}:{spec.name}_rows"]] == [spec.functions()[1]]
     record = ec.Stance(P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, 1e-11, 1e-12, 1.0)
     td = (0.99, -1.5, 0.35, -4.5)
     called = {  # as test_exact_compiled.py and test_exact_rtol.py call them

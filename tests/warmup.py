@@ -11,7 +11,7 @@ cache it imports the generated modules and reads their cache indexes: no subproc
 A job is a generated module's role kernels at the maps' default options (every role of every map
 and half-stance map, and the model's kernels: the index, ``runtime/api/index.py``), the deadbeat
 solver (:data:`CONTROL`), or one kernel that tests call beyond those (:func:`kernel_jobs`: the other
-choices of a specialized option, the Jacobians' batch forms test_jacobian.py calls, the exact
+choices of a specialized option, every map's Jacobians' batch forms, the exact
 simulator's external kernels), each of which a worker compiled for itself before.
 
 numba keys a cache entry by the exact signature a compile asks for. A kernel is compiled
@@ -47,10 +47,9 @@ CONTROL = "control"
 #: Roles whose kernels tests call at every choice of a specialized option (the zeroth iterate of
 #: ``iterative``), not only at its default: True with the batch form. test_codegen.py runs every
 #: scalar kernel of the map modules, test_iterative.py and test_accuracy.py the batch forms of
-#: every zeroth iterate, test_jacobian.py the stance Jacobian at every option choice.
-CHOICE_ROLES = {"stance": True, "apex_return": True, "stance_jacobian": False}
-#: The maps whose Jacobians' batch forms tests call (test_jacobian.py; the other maps' none).
-JACOBIAN_BATCHES = ("geyer", "gravity-type4", "geyer-vs", "exact")
+#: every zeroth iterate, test_jacobian.py the stance Jacobian at every option choice,
+#: test_c_export.py every role's row kernel at every choice.
+CHOICE_ROLES = {"stance": True, "apex_return": True, "stance_jacobian": False, "apex_return_jacobian": False}
 #: The exact simulator's external kernels (generated/exact_stance.py) that tests call directly
 #: (test_exact_compiled.py, test_exact_rtol.py); each inlines the DOP853 integrator.
 EXACT_KERNELS = (
@@ -85,7 +84,7 @@ def signatures(spec, row: bool = True, rows: bool | None = None) -> list[tuple]:
     """``(function, argument types)`` the warm-up compiles for ``spec``: the role kernel at the types
     of ``kernel(x, p, out)`` (unless ``row`` is False), and its batch form at those of
     ``kernel_rows(X, P, OUT, STATUS)`` (C-contiguous float64, writable; int64 statuses) when
-    ``rows``, by default unless it is a Jacobian's (its batch form: :data:`JACOBIAN_BATCHES`)."""
+    ``rows``, by default unless it is a Jacobian's (its batch form: :func:`kernel_jobs`)."""
     import numba
     import numpy as np
 
@@ -116,7 +115,7 @@ def _external_types(function) -> tuple:
 def kernel_jobs() -> dict[str, list[tuple]]:
     """The jobs of one kernel (``module:function``): ``(function, argument types)`` to compile, for
     what tests call beyond the role kernels at the defaults (:data:`CHOICE_ROLES`,
-    :data:`JACOBIAN_BATCHES`, :data:`EXACT_KERNELS`)."""
+    :data:`EXACT_KERNELS`)."""
     from slipmaps.generated import exact_stance
     from slipmaps.runtime.api import index
 
@@ -128,9 +127,9 @@ def kernel_jobs() -> dict[str, list[tuple]]:
                 spec = default.chosen(suffix) if default is not None else None
                 if spec is not None and spec.name != default.name:
                     out[f"{spec.module}:{spec.name}"] = signatures(spec, rows=rows)
-    for name in JACOBIAN_BATCHES:
+    for m in index.maps():  # every map's Jacobians' batch forms (test_c_export.py, test_jacobian.py)
         for role in ("stance_jacobian", "apex_return_jacobian"):
-            spec = index.get(name).kernels[role]
+            spec = m.kernels[role]
             out[f"{spec.module}:{spec.name}_rows"] = signatures(spec, row=False, rows=True)
     for name in EXACT_KERNELS:
         function = getattr(exact_stance, name)
