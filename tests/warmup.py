@@ -46,10 +46,10 @@ CONTROL = "control"
 
 #: Roles whose kernels tests call at every choice of a specialized option (the zeroth iterate of
 #: ``iterative``), not only at its default: True with the batch form. test_codegen.py runs every
-#: scalar kernel of the map modules, test_iterative.py and test_accuracy.py the batch forms of
-#: every zeroth iterate, test_jacobian.py the stance Jacobian at every option choice,
+#: scalar kernel of the map modules, test_accuracy.py the stance's batch form at every zeroth
+#: iterate (the accuracy record), test_jacobian.py the stance Jacobian at every option choice,
 #: test_c_export.py every role's row kernel at every choice.
-CHOICE_ROLES = {"stance": True, "apex_return": True, "stance_jacobian": False, "apex_return_jacobian": False}
+CHOICE_ROLES = {"stance": True, "apex_return": False, "stance_jacobian": False, "apex_return_jacobian": False}
 #: The exact simulator's external kernels (generated/exact_stance.py) that tests call directly
 #: (test_exact_compiled.py, test_exact_rtol.py); each inlines the DOP853 integrator.
 EXACT_KERNELS = (
