@@ -132,3 +132,24 @@ def test_a_warm_cache_starts_nothing(monkeypatch):
     said = []
     assert warmup.warm(2, say=said.append) == 0.0
     assert said == []
+
+
+def test_kernel_jobs_start_after_every_module_job_has_finished():
+    """A kernel job (``module:function``) calls what the modules' jobs compile: it waits until every
+    one of them has finished (not only been taken), so its callees load from the cache."""
+    import threading
+
+    phases = warmup.Phases(["control", "exact", "iterative:a", "geyer", "iterative:b"])
+    assert [phases.take(), phases.take(), phases.take()] == ["control", "exact", "geyer"]
+    got: list = []
+    waiting = threading.Thread(target=lambda: got.append(phases.take()))
+    waiting.start()
+    for job in ("control", "geyer"):
+        phases.finished(job)
+    waiting.join(timeout=0.2)
+    assert waiting.is_alive() and got == []  # "exact" is still running
+    phases.finished("exact")
+    waiting.join(timeout=10)
+    assert got == ["iterative:a"]
+    phases.finished("iterative:a")
+    assert [phases.take(), phases.take()] == ["iterative:b", None]

@@ -5,8 +5,10 @@ On an empty cache most of a first run of the suite is numba compiling kernels, a
 suite's controller (tests/conftest.py) calls :func:`warm` first: it finds the jobs (:func:`jobs`)
 with a kernel that has no entry in numba's cache for the types the suite calls it with, and runs
 those in ``processes`` subprocesses that take the jobs one at a time, longest first (an estimate:
-:func:`_order`), as they finish. The workers then load the kernels from the cache. With a warm
-cache it imports the generated modules and reads their cache indexes: no subprocess.
+:func:`_order`), as they finish: the jobs of the modules' role kernels first, then, once those have
+finished, the jobs of single kernels that call them (:class:`Phases`). The workers then load the
+kernels from the cache. With a warm cache it imports the generated modules and reads their cache
+indexes: no subprocess.
 
 A job is a generated module's role kernels at the maps' default options (every role of every map
 and half-stance map, and the model's kernels: the index, ``runtime/api/index.py``), the deadbeat
@@ -31,7 +33,6 @@ input, so a failure there only leaves work to the workers, as without the warm-u
 from __future__ import annotations
 
 import os
-import queue
 import subprocess
 import sys
 import tempfile
@@ -252,9 +253,7 @@ def warm(processes: int, say=print) -> float:
         return 0.0
     processes = max(1, min(processes, len(cold)))
     say(f"warming numba's cache (empty or stale): {len(cold)} jobs in {processes} processes")
-    todo: queue.Queue[str] = queue.Queue()
-    for job in cold:
-        todo.put(job)
+    todo = Phases(cold)
     failed: list[str] = []
     took: dict[str, float] = {}
     with tempfile.TemporaryDirectory(prefix="slipmaps-warmup-") as folder:
@@ -271,7 +270,40 @@ def warm(processes: int, say=print) -> float:
     return seconds
 
 
-def _drive(log: Path, todo: queue.Queue, failed: list[str], seconds: dict[str, float]) -> None:
+class Phases:
+    """The cold jobs in two phases, each in the order given: a generated module's role kernels (and
+    :data:`CONTROL`), then the jobs of one kernel (``module:function``, :func:`kernel_jobs`), which
+    start when every job of the first phase has finished. A kernel job's kernel calls what the first
+    phase compiles (an option choice's kernel calls the iterative core and the zeroth iterate's
+    map): after it, the callees load from the cache; beside it, the two processes compiled them
+    twice (measured: the zeroth=geyer-vs stance Jacobian 16-26 s in the warm-up, 1.7 s after the
+    jobs of its module and of geyer-vs's Jacobians)."""
+
+    def __init__(self, jobs: list[str]):
+        self._first = [j for j in jobs if ":" not in j]
+        self._second = [j for j in jobs if ":" in j]
+        self._running = 0  # first-phase jobs taken and not finished
+        self._changed = threading.Condition()
+
+    def take(self) -> str | None:
+        """The next job (None when none is left); a second-phase job once the first phase is over."""
+        with self._changed:
+            if self._first:
+                self._running += 1
+                return self._first.pop(0)
+            while self._running:
+                self._changed.wait()
+            return self._second.pop(0) if self._second else None
+
+    def finished(self, job: str) -> None:
+        """``job`` (from :meth:`take`) is done, compiled or not."""
+        if ":" not in job:
+            with self._changed:
+                self._running -= 1
+                self._changed.notify_all()
+
+
+def _drive(log: Path, todo: Phases, failed: list[str], seconds: dict[str, float]) -> None:
     """One subprocess: give it the next job, wait until it says it is done, until none is left."""
     with open(log, "w+b") as err:
         proc = subprocess.Popen(
@@ -282,16 +314,17 @@ def _drive(log: Path, todo: queue.Queue, failed: list[str], seconds: dict[str, f
             text=True,
         )
         try:
-            while True:
+            while (job := todo.take()) is not None:
                 try:
-                    job = todo.get_nowait()
-                except queue.Empty:
-                    break
-                proc.stdin.write(job + "\n")
-                proc.stdin.flush()
-                answer = proc.stdout.readline().split()
-                while answer and answer[0] not in ("done", "failed"):  # something else printed
+                    proc.stdin.write(job + "\n")
+                    proc.stdin.flush()
                     answer = proc.stdout.readline().split()
+                    while answer and answer[0] not in ("done", "failed"):  # something else printed
+                        answer = proc.stdout.readline().split()
+                except OSError:  # the process ended before it read the job
+                    answer = []
+                finally:
+                    todo.finished(job)
                 if answer[:2] == ["done", job]:
                     seconds[job] = float(answer[2])
                 else:
