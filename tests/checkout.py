@@ -81,11 +81,10 @@ class Checkout:
         """Copy this process's numba cache entries of ``slipmaps.generated`` into the folder numba
         uses for the copy's generated modules (numba's ``NUMBA_CACHE_DIR`` layout: the folder's name
         and a hash of its path, the path as the copy's site names it); returns that folder."""
-        import slipmaps.generated.flight as flight
         from numba.core.caching import UserProvidedCacheLocator
+        from slipmaps.generated import flight
 
-        ours = next(v for v in vars(flight).values() if hasattr(v, "_cache") and hasattr(v, "py_func"))
-        source = Path(ours._cache._cache_path)
+        source = Path(flight.apex_to_touchdown._cache._cache_path)
         module = self.site / "slipmaps" / "generated" / "flight.py"
         dest = self.cache / UserProvidedCacheLocator.get_suitable_cache_subpath(str(module))
         dest.mkdir(parents=True, exist_ok=True)

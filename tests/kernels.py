@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import importlib
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from functools import cache
 
 import numpy as np
@@ -57,11 +57,7 @@ def invoke(kernel: Kernel, values: Mapping[str, float], fn=None) -> tuple:
     how = abi(kernel)
     n_out = len(kernel.output_names)
     if how.layout is not None:
-        x = np.array([_value(values, a) for a in how.layout.x])
-        p = np.array([float(values.get(f, math.nan)) for f in how.layout.p] or [math.nan])
-        out = np.empty(n_out)
-        status = fn(x, p, out)
-        return (*map(float, out), int(status))
+        return call_layouts(fn, how.layout.x, how.layout.p, n_out, values)
     args = [_value(values, a) for a in kernel.arg_names]
     if how.args_array:
         args = [np.array(args)]
@@ -70,6 +66,17 @@ def invoke(kernel: Kernel, values: Mapping[str, float], fn=None) -> tuple:
         status = fn(*args, out)
         return (*map(float, out), int(status))
     return fn(*args)
+
+
+def call_layouts(fn, x: Sequence[str], p: Sequence[str], width: int, values: Mapping[str, float]) -> tuple:
+    """A role kernel ``fn(x, p, out) -> status`` with its layouts filled by name from ``values``
+    (``x`` the inputs' names, ``p`` the parameter record's: a field not given is NaN); its
+    ``width`` outputs, then its status."""
+    xs = np.array([_value(values, a) for a in x])
+    ps = np.array([float(values.get(f, math.nan)) for f in p] or [math.nan])
+    out = np.empty(width)
+    status = fn(xs, ps, out)
+    return (*map(float, out), int(status))
 
 
 def outputs(kernel: Kernel, result: tuple) -> dict[str, float]:

@@ -5,8 +5,7 @@ Tolerances are measured (see each docstring).
 
 from __future__ import annotations
 
-import math
-
+import kernels
 import numpy as np
 import pytest
 import slipmaps
@@ -146,9 +145,7 @@ def test_pass_bound_is_enforced():
     def status(**values) -> Status:
         """The kernel's status, its layouts filled by the index's names."""
         env = {**base, "nodes": 3.0, "tol": 0.0, **values}  # nodes: the code of 4 nodes
-        x = np.array([env[a] for a in spec.x])
-        p = np.array([env.get(f, math.nan) for f in spec.p])
-        return Status(kernel(x, p, np.empty(spec.width)))
+        return Status(kernels.call_layouts(kernel, spec.x, spec.p, spec.width, env)[-1])
 
     assert status(iterations=100.0) == Status.OK
     assert status(iterations=101.0) == Status.INVALID_INPUT
