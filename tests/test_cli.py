@@ -8,6 +8,7 @@ import math
 
 import pytest
 from slipmaps.generated import maps_index
+from slipmaps.generated.status import Status
 from slipmaps.runtime.api import index
 from slipmaps.runtime.api.params import HUMAN_RUNNER
 from slipmaps.runtime.cli.app import main
@@ -47,6 +48,24 @@ def test_compare_default_prints_table_and_writes_plot(tmp_path, capsys):
     assert "abs err" in out and "rel err" in out
     assert png.stat().st_size > 10_000
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_compare_plot_draws_the_exact_curve_from_its_solve_ivp_backend():
+    # the plotted curve of a map with a solve_ivp backend comes from it unless a method was chosen
+    # (a first run then compiles no state-at-time kernel of the exact map); the curve is the
+    # compiled kernel's to round-off (measured 3.6e-15 on the default step)
+    from slipmaps.runtime.api.maps import trajectory
+    from slipmaps.runtime.cli.compare import _curve_options
+
+    exact = index.get("exact")
+    assert _curve_options(exact, {"rtol": 1e-9}) == {"rtol": 1e-9, "method": "scipy"}
+    assert _curve_options(exact, {"method": "compiled"}) == {"method": "compiled"}
+    assert _curve_options(index.get("geyer"), {}) == {}
+    td = compare(HUMAN_RUNNER).touchdown
+    t, curve, status = trajectory("exact", HUMAN_RUNNER, td, **_curve_options(exact, {}))
+    _, compiled, compiled_status = trajectory("exact", HUMAN_RUNNER, td, t=t)
+    assert status == compiled_status == Status.OK and t.size == 200
+    assert abs(curve - compiled).max() < 1e-12
 
 
 def test_compare_plots_a_map_with_event_states_only(tmp_path, capsys):

@@ -366,6 +366,18 @@ def _mark_states(axes, t, states, events, label: str, color: str) -> None:
         ax.margins(y=0.12)
 
 
+def _curve_options(info, options: dict) -> dict:
+    """The options a map's plotted curve runs with: those of its stance, except that a map with a
+    ``solve_ivp`` backend (the exact map's ``method="scipy"``) draws its curve from that backend's
+    dense output unless a method was chosen. Its stance, bottom and liftoff come from the compiled
+    kernel (the two stances agree to 1e-14: docs/performance.md); the curve needs no compiled
+    state-at-time kernel, which a first run on an empty cache would compile for about 5 s."""
+    for option in info.options:
+        if option.name not in options and "scipy" in option.backends:
+            return {**options, option.name: "scipy"}
+    return options
+
+
 def plot(c: Comparison, path: str) -> str:
     """Write a PNG of q_r(t) and q_th(t) of both stances and return its path. A map without a
     trajectory (``iterative``, ``iterative-report``, the half-stance maps) shows only the event
@@ -398,7 +410,7 @@ def plot(c: Comparison, path: str) -> str:
             _mark_states(axes, t, states, ("touchdown", "bottom", "liftoff"), label, style["color"])
             continue
         label = f"{side.map} ({info.title})"
-        t, states, _ = trajectory(side.map, c.params, td, **side.options)
+        t, states, _ = trajectory(side.map, c.params, td, **_curve_options(info, side.options))
         if t.size:
             ok = np.all(np.isfinite(states), axis=1)
             axes[0].plot(t[ok], states[ok, 0], label=label, **style)
