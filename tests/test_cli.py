@@ -50,6 +50,18 @@ def test_compare_default_prints_table_and_writes_plot(tmp_path, capsys):
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+def test_compare_prints_its_table_before_drawing_the_plot(tmp_path, capsys, monkeypatch):
+    # a first run compiles the plot's kernels after the table: the reader has the numbers first
+    from slipmaps.runtime.cli import compare as compare_module
+
+    printed = []
+    monkeypatch.setattr(compare_module, "plot", lambda c, path: printed.append(capsys.readouterr().out))
+    png = tmp_path / "p.png"
+    assert main(["compare", "--against", "geyer", "--plot", str(png)]) == 0
+    assert len(printed) == 1 and "next apex speed" in printed[0]
+    assert capsys.readouterr().out.strip() == f"plot: {png}"
+
+
 def test_compare_plot_draws_the_exact_curve_from_its_solve_ivp_backend():
     # the plotted curve of a map with a solve_ivp backend comes from it unless a method was chosen
     # (a first run then compiles no state-at-time kernel of the exact map); the curve is the

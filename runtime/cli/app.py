@@ -360,6 +360,8 @@ def _cmd_compare(args: argparse.Namespace) -> int:
         options=map_options(name, args.option),
         against_options=map_options(against, args.against_option),
     )
+    if not args.json:  # the table first, flushed: the reader has the numbers while the plot is drawn
+        print(format_table(c), flush=True)
     if path:
         try:
             plot(c, path)
@@ -369,10 +371,8 @@ def _cmd_compare(args: argparse.Namespace) -> int:
         data = c.to_dict()
         data["plot"] = path
         print(json.dumps(data, indent=2))
-    else:
-        print(format_table(c))
-        if path:
-            print(f"\nplot: {path}")
+    elif path:
+        print(f"\nplot: {path}")
     return 0 if c.ok else 1
 
 
