@@ -318,3 +318,36 @@ def test_an_unreachable_step_names_the_touchdown_geometry_when_it_binds():
     assert "touchdown geometry binds" in res.message and f"{res.touchdown_limit:.6g} rad" in res.message
     other = slipmaps.deadbeat("iterative", P, 0.9, 5.0, 2.0, 5.0)  # k_d's bound binds there instead
     assert other.status == "UNREACHABLE" and "geometry" not in other.message and "k_d at its" in other.message
+
+
+# --- the touchdown state of a scalar stance: any container of 4 real numbers, checked the same way --
+STATE = (0.98, -1.5, 0.35, -4.5)
+
+
+@pytest.mark.parametrize(
+    "given",
+    [STATE, list(STATE), np.array(STATE), tuple(np.float64(v) for v in STATE), (1, -1.5, 0.35, -4.5)],
+    ids=["tuple", "list", "array", "numpy-scalars", "an-int"],
+)
+def test_stance_takes_the_touchdown_in_any_container_of_four_numbers(given):
+    expected = slipmaps.stance("geyer", slipmaps.HUMAN_RUNNER, tuple(float(v) for v in given))
+    got = slipmaps.stance("geyer", slipmaps.HUMAN_RUNNER, given)
+    assert got.status == Status.OK and got.values == expected.values
+
+
+@pytest.mark.parametrize(
+    ("given", "error", "says"),
+    [
+        ((0.98, math.nan, 0.35, -4.5), ValueError, "touchdown q_rd must be finite, got nan"),
+        ((0.98, -1.5, math.inf, -4.5), ValueError, "touchdown q_th must be finite, got inf"),
+        ((1.2, -1.5, 0.35, -4.5), ValueError, "touchdown q_r must lie in (0, l0=1.0], got 1.2"),
+        ((0.98, -1.5, 1.6, -4.5), ValueError, "touchdown q_th must satisfy |touchdown q_th| < pi/2"),
+        ((0.98, -1.5, True, -4.5), TypeError, "touchdown q_th must be a real number, got bool True"),
+        ((0.98, -1.5, 0.35), ValueError, "touchdown must be 4 numbers"),
+        ("0.98", TypeError, "touchdown must be 4 numbers"),
+    ],
+)
+def test_a_bad_touchdown_is_refused_naming_the_value(given, error, says):
+    with pytest.raises(error) as info:
+        slipmaps.stance("geyer", slipmaps.HUMAN_RUNNER, given)
+    assert says in str(info.value)

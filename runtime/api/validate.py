@@ -96,19 +96,27 @@ def real_array(name: str, value: object) -> np.ndarray:
 
 def polar_state(params: SlipParams, state: object, what: str = "touchdown") -> PolarState:
     """Validate a polar stance state (q_r, q_rd, q_th, q_thd) with 0 < q_r <= l0 and |q_th| < pi/2."""
-    if isinstance(state, (str, bytes)):
-        raise NotANumber(f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got {state!r}")
-    try:
-        arr = real_array(what, state)
-    except NotANumber:
-        raise
-    except ValueError:  # ragged
-        raise ValueError(f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got {state!r}") from None
-    if arr.shape != (4,):
-        raise ValueError(
-            f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got shape {arr.shape}: {state!r}"
-        )
-    q_r, q_rd, q_th, q_thd = (real(f"{what} {n}", v) for n, v in zip(POLAR_NAMES, arr, strict=True))
+    if (
+        (type(state) is tuple or type(state) is list)
+        and len(state) == 4
+        and not any(isinstance(v, (tuple, list, np.ndarray)) for v in state)
+    ):
+        values = state  # each entry checked as itself below: no array, and a bool refused
+    else:
+        if isinstance(state, (str, bytes)):
+            raise NotANumber(f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got {state!r}")
+        try:
+            arr = real_array(what, state)
+        except NotANumber:
+            raise
+        except ValueError:  # ragged
+            raise ValueError(f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got {state!r}") from None
+        if arr.shape != (4,):
+            raise ValueError(
+                f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got shape {arr.shape}: {state!r}"
+            )
+        values = arr.tolist()  # Python floats: real()'s one-check path
+    q_r, q_rd, q_th, q_thd = (real(f"{what} {n}", v) for n, v in zip(POLAR_NAMES, values, strict=True))
     if not 0.0 < q_r <= params.l0 * (1.0 + L0_SLACK):
         raise ValueError(f"{what} q_r must lie in (0, l0={num(params.l0)}], got {num(q_r)}")
     leg_angle(f"{what} q_th", q_th)
