@@ -72,6 +72,9 @@ def run_rows(rows, X: np.ndarray, P: np.ndarray, OUT: np.ndarray, STATUS: np.nda
     """A role kernel's batch form ``rows(X, P, OUT, STATUS)`` over every row of ``X`` (C-contiguous
     float64, one row per call of the kernel; ``P`` (1, k) for one parameter record, (n, k) for one
     per row; ``OUT`` and ``STATUS`` one row each), by :func:`run_blocks`."""
+    if X.shape[0] <= FIRST_BLOCK:  # one block (run_blocks would run it here too): no closure
+        rows(X, P, OUT, STATUS)
+        return
     shared = P.shape[0] == 1
 
     def block(lo, hi):

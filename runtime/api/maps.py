@@ -141,7 +141,10 @@ def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tup
     shapes = {x.shape for x in arrays.values()}
     shape = next(iter(shapes)) if len(shapes) == 1 else np.broadcast_shapes(*shapes)
     n = math.prod(shape)
-    rows = {a: (x if x.shape == shape else np.broadcast_to(x, shape)).reshape(n) for a, x in arrays.items()}
+    rows = {
+        a: x if x.shape == (n,) else (x if x.shape == shape else np.broadcast_to(x, shape)).reshape(n)
+        for a, x in arrays.items()
+    }
     return rows, inputs, shape
 
 

@@ -84,6 +84,8 @@ CHECKS = {
 def real_array(name: str, value: object) -> np.ndarray:
     """``value`` as a float64 array (no copy when it already is one); TypeError when it holds
     strings, bytes or other non-numbers (numpy would parse ``"1.0"`` as 1.0)."""
+    if type(value) is np.ndarray and value.dtype == np.float64:  # the common case: as it is
+        return value
     arr = np.asarray(value)
     if arr.dtype.kind == "O":
         bad = next((v for v in arr.flat if not is_real(v)), None)
