@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
 #   exact_stance.py sha256:299560de25340ae1
-#   flight.py sha256:456f9ff51de745b4
+#   flight.py sha256:c3f273b7986622bd
 # ----------------------------------------------------------------------------------------------
 """Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom ->
 liftoff."""

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
 #   exact_stance.py sha256:299560de25340ae1
-#   flight_jacobian.py sha256:6429d69e2f546b98
+#   flight_jacobian.py sha256:89c8df78cbc78d9f
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""

@@ -52,7 +52,7 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
         foot_x: horizontal position of the toe at touchdown relative to the apex [m]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 58
+    # Total ops: 66
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground)
@@ -68,38 +68,52 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
     # |retraction_rate| <= sqrt(g_f/q_r_td): the foot's height concave in time
     if not ((q_r_td*retraction_rate**2 <= g_f)):
         return _NAN6 + (STATUS_INVALID_INPUT,)
-    # a start at or after the touchdown: t0 if the foot is on or below the ground then, else the time the body
-    # is q_r_td below the ground
-    _x0 = 2.0*q_r_td
-    _x1 = math.cos(q_th_td)
-    _x2 = math.sqrt(_x0*_x1 + _x0 + 2.0*drop)/math.sqrt(g_f)
-    t_far = _x2
-    t_start = ((t0) if (q_r_td*(_x1 - math.cos(q_th_td + retraction_rate*t0)) <= 0.0) else (_x2))
-    # Newton's method on the foot's height (concave: monotone from the right)
-    t_td = t_start
-    touchdown_passes = 0.0
-    _conv0 = False
-    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
-    # final iterate is evaluated too, so its values are visible after the loop
-    _last0 = max(int(50.0), 0)
-    for _it0 in range(_last0 + 1):
-        if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and touchdown_passes > 0.0:
-            return _NAN6 + (STATUS_NOT_CONVERGED,)
-        _x3 = (0.5)*g_f
-        foot_slope = (_x3*(t0 - t_td) - _x3*(t0 + t_td) + q_r_td*retraction_rate*math.sin(q_th_td
-            + retraction_rate*t_td))
-        # the foot descends toward the ground
-        if not ((foot_slope < 0.0)):
-            return _NAN6 + (STATUS_NO_TOUCHDOWN,)
-        if _conv0 or _it0 == _last0:
-            break
-        _n0_0 = (t_td - ((0.5)*g_f*(t0 - t_td)*(t0 + t_td) + q_r_td*(math.cos(q_th_td) - math.cos(q_th_td
-            + retraction_rate*t_td)))/foot_slope)
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - t_td) <= 1e-12*(t0))
-        t_td = _n0_0
-        touchdown_passes += 1.0
+    # 0: the leg held still (retraction_rate = 0), 1: a swinging leg
+    swinging = ((0.0) if (retraction_rate == 0.0) else (1.0))
+    # the touchdown time: closed form for a leg held still, else Newton's method
+    if swinging == 0.0:
+        # t0 with its first-order term in the rate (the rate's derivative; t0 itself here, as Newton's method
+        # from t0 gives bit for bit); no pass
+        t_td = t0 + q_r_td*retraction_rate*math.sin(q_th_td)/g_f
+        t_start = t0
+        t_far = t0
+        foot_slope = -g_f*t0
+        touchdown_passes = 0.0
+    elif swinging == 1.0:
+        # a start at or after the touchdown: t0 if the foot is on or below the ground then, else the time the
+        # body is q_r_td below the ground
+        _x0 = 2.0*q_r_td
+        _x1 = math.cos(q_th_td)
+        _x2 = math.sqrt(_x0*_x1 + _x0 + 2.0*drop)/math.sqrt(g_f)
+        t_far = _x2
+        t_start = ((t0) if (q_r_td*(_x1 - math.cos(q_th_td + retraction_rate*t0)) <= 0.0) else (_x2))
+        # Newton's method on the foot's height (concave: monotone from the right)
+        t_td = t_start
+        touchdown_passes = 0.0
+        _conv0 = False
+        # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+        # final iterate is evaluated too, so its values are visible after the loop
+        _last0 = max(int(50.0), 0)
+        for _it0 in range(_last0 + 1):
+            if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and touchdown_passes > 0.0:
+                return _NAN6 + (STATUS_NOT_CONVERGED,)
+            _x3 = (0.5)*g_f
+            foot_slope = (_x3*(t0 - t_td) - _x3*(t0 + t_td) + q_r_td*retraction_rate*math.sin(q_th_td
+                + retraction_rate*t_td))
+            # the foot descends toward the ground
+            if not ((foot_slope < 0.0)):
+                return _NAN6 + (STATUS_NO_TOUCHDOWN,)
+            if _conv0 or _it0 == _last0:
+                break
+            _n0_0 = (t_td - ((0.5)*g_f*(t0 - t_td)*(t0 + t_td) + q_r_td*(math.cos(q_th_td) - math.cos(q_th_td
+                + retraction_rate*t_td)))/foot_slope)
+            # converged when every variable moved by at most tol times its scale (NaN never converges;
+            # tol = 0 runs every pass)
+            _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - t_td) <= 1e-12*(t0))
+            t_td = _n0_0
+            touchdown_passes += 1.0
+    else:
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # the leg angle at touchdown
     touchdown_angle = q_th_td + retraction_rate*t_td
     # the leg above the horizontal

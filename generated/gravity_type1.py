@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:456f9ff51de745b4
-#   geyer.py sha256:cdeacb261ab77e9d
+#   flight.py sha256:c3f273b7986622bd
+#   geyer.py sha256:4ceaa707d89ddf13
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance, state-at-time and
 apex-return kernels."""

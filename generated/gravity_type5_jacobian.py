@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight_jacobian.py sha256:6429d69e2f546b98
-#   geyer_jacobian.py sha256:6b07777bdd6be39d
+#   flight_jacobian.py sha256:89c8df78cbc78d9f
+#   geyer_jacobian.py sha256:f0e0f0ee9bacbc8d
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
 a map its stance and apex-return Jacobians."""

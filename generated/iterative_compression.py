@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   geyer.py sha256:cdeacb261ab77e9d
-#   geyer_vs.py sha256:3eb3efab7f354993
-#   gravity_type0.py sha256:d6fc51e4fdd6f299
-#   gravity_type1.py sha256:81616b3729716d73
-#   gravity_type2.py sha256:736e48f25e557401
-#   gravity_type3.py sha256:ee47a7f7ff99ead3
-#   gravity_type4.py sha256:6b5b8e8326a9194a
-#   gravity_type5.py sha256:523a0ec45a016e46
-#   iterative.py sha256:d82b1f5bbebb71fb
+#   geyer.py sha256:4ceaa707d89ddf13
+#   geyer_vs.py sha256:08ed6b7d0983088c
+#   gravity_type0.py sha256:1ae04de240aec97c
+#   gravity_type1.py sha256:02eec82721d97ec3
+#   gravity_type2.py sha256:1dc28eb4c89cc48c
+#   gravity_type3.py sha256:a90033610a6399e3
+#   gravity_type4.py sha256:f10db4ae1bbe2696
+#   gravity_type5.py sha256:41aafd316b51cc3e
+#   iterative.py sha256:2bb2fea98d33c1b8
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:456f9ff51de745b4
-#   iterative.py sha256:d82b1f5bbebb71fb
+#   flight.py sha256:c3f273b7986622bd
+#   iterative.py sha256:2bb2fea98d33c1b8
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight_jacobian.py sha256:6429d69e2f546b98
-#   geyer_jacobian.py sha256:6b07777bdd6be39d
-#   geyer_vs_jacobian.py sha256:b676b5809e002a48
-#   gravity_type0_jacobian.py sha256:a803d7949f643b91
-#   gravity_type1_jacobian.py sha256:364a82369b21bfea
-#   gravity_type2_jacobian.py sha256:8da856ff8d915a30
-#   gravity_type3_jacobian.py sha256:b9384c5ed1f7f88d
-#   gravity_type4_jacobian.py sha256:60f17c2dd027ad8c
-#   gravity_type5_jacobian.py sha256:aacfe59cf9d8763a
+#   flight_jacobian.py sha256:89c8df78cbc78d9f
+#   geyer_jacobian.py sha256:f0e0f0ee9bacbc8d
+#   geyer_vs_jacobian.py sha256:4caa2e0b30d497f1
+#   gravity_type0_jacobian.py sha256:26b855543aae933f
+#   gravity_type1_jacobian.py sha256:53922bb1a9cbf044
+#   gravity_type2_jacobian.py sha256:e2cd4b16f2ec4b31
+#   gravity_type3_jacobian.py sha256:dc696a885ff81658
+#   gravity_type4_jacobian.py sha256:dd727157da411a5b
+#   gravity_type5_jacobian.py sha256:2d533215ccefaeea
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:456f9ff51de745b4
-#   geyer_vs.py sha256:3eb3efab7f354993
+#   flight.py sha256:c3f273b7986622bd
+#   geyer_vs.py sha256:08ed6b7d0983088c
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""

@@ -75,12 +75,13 @@ def _central(f, x0: tuple, j: int, h: float, outputs) -> np.ndarray:
 #: +x onto a step up of 5 cm from a 1.1 m apex with the leg retracting at 0.5 rad/s, and toward -x
 #: (the mirrored angle and rate) onto a step down of 3 cm; both fall 9-11 cm to touchdown, as the
 #: flat-ground point (1.0, 5.0, 0.35) does 6 cm (a grazing touchdown's derivatives grow as
-#: 1/sqrt(drop), beyond the difference quotients' reach).
-APEX_POINTS = [(1.1, 5.0, 0.35, 0.05, -0.5), (1.0, -5.0, -0.35, -0.03, 0.5)]
+#: 1/sqrt(drop), beyond the difference quotients' reach); and the first with the leg held still (a
+#: rate of 0: the touchdown time's closed form, whose rate column the differences at +-h check).
+APEX_POINTS = [(1.1, 5.0, 0.35, 0.05, -0.5), (1.0, -5.0, -0.35, -0.03, 0.5), (1.1, 5.0, 0.35, 0.05, 0.0)]
 APEX_NAMES = ("apex_height", "apex_speed", "touchdown_angle", "ground", "retraction_rate")
 
 
-@pytest.mark.parametrize("point", APEX_POINTS, ids=["forward-step-up", "backward-step-down"])
+@pytest.mark.parametrize("point", APEX_POINTS, ids=["forward-step-up", "backward-step-down", "leg-held"])
 @pytest.mark.parametrize("name", NAMES)
 def test_apex_return_jacobian_matches_central_differences(name, point):
     """Every column, the ground's, the signed speed's and the retraction rate's included, against

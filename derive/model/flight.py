@@ -14,7 +14,7 @@ from functools import cache
 import sympy as sp
 
 from ..catalog import APEX_ARGS, DIRECTION, PARAMS, POLAR
-from ..ir import Arg, Field, Group, Guard, Iterate, Kernel, Stage, positive, real, sym
+from ..ir import Arg, Field, Group, Guard, Iterate, Kernel, Stage, Switch, positive, real, sym
 from ..symbols import (
     b_x,
     b_xd,
@@ -61,12 +61,14 @@ def apex_to_touchdown():
     running is 0.5-2 rad/s) f is concave, ``f'' = -g_f + q_r_td rate^2 cos q_th(t) <= 0``: positive at
     the apex, it has one positive root, the touchdown, and Newton's method converges to it
     monotonically from any start at or after it. The start is ``t0`` when the foot is on or below
-    the ground then, else the time the body is ``q_r_td`` below the ground (where f <= 0). The
-    second form of f is exactly 0 at ``t = t0`` for a rate of 0, so Newton's method returns the
-    closed form bit for bit there, and its one pass carries the derivative with respect to the rate.
+    the ground then, else the time the body is ``q_r_td`` below the ground (where f <= 0). A leg
+    held still (a rate of exactly 0) skips the iteration: its touchdown time is ``t_held``, t0 plus
+    the rate times the implicit derivative -f_rate/f_t at (t0, 0), which is t0 bit for bit there (as
+    Newton's method from t0 gives: the second form of f is exactly 0 at ``t = t0``) and carries the
+    derivative with respect to the rate into the Jacobians.
 
-    Returns a dict: ``drop`` (an expression), ``t0``; ``residual`` and ``slope`` (f and df/dt at the
-    symbol ``t``); ``angle`` (q_th at ``t``); the polar touchdown ``state`` and ``foot_x`` (the
+    Returns a dict: ``drop`` (an expression), ``t0``, ``t_held``; ``residual`` and ``slope`` (f and
+    df/dt at the symbol ``t``); ``angle`` (q_th at ``t``); the polar touchdown ``state`` and ``foot_x`` (the
     toe's horizontal position relative to the apex) at the time ``t`` and the angle symbol
     ``angle_symbol``; ``t_far``, the time the body is ``q_r_td`` below the contact height (in
     ``drop_symbol``), Newton's start when the foot is still above the ground at ``t0``.
@@ -98,6 +100,12 @@ def apex_to_touchdown():
     )
     if check != 0:
         raise AssertionError(f"apex_to_touchdown: the residual's two forms differ by {check}")
+    # a leg held still (rate 0): the closed form t0, with its first-order term in the rate (the
+    # implicit derivative -f_rate/f_t at (t0, 0)): t0 itself at a rate of 0, and the derivative of the
+    # touchdown time with respect to the rate there
+    t_held = t0_symbol - rate * sp.simplify(
+        (residual.diff(rate) / residual.diff(t)).subs({t: t0_symbol, rate: 0})
+    )
     th = sp.Symbol("touchdown_angle", real=True)
     pos = mechanics.body_position(q_r_td, th)
     # The touchdown polar rates follow from the derived Cartesian -> polar map at the touchdown posture.
@@ -109,6 +117,7 @@ def apex_to_touchdown():
         "t0": t0,
         "t0_symbol": t0_symbol,
         "t_far": t_far,
+        "t_held": t_held,
         "residual": residual,
         "slope": residual.diff(t),
         "angle": angle,
@@ -149,8 +158,46 @@ def flight_kernels() -> dict[str, Kernel]:
     atd = apex_to_touchdown()
     drop, t0, angle = atd["drop_symbol"], atd["t0_symbol"], atd["angle_symbol"]
     t_td, slope, t_far, t_start = sym("t_td"), sym("foot_slope"), sym("t_far"), sym("t_start")
+    rate, swinging = INPUTS["retraction_rate"].symbol, sym("swinging")
     at = {t: t_td}
     q_r_td = PARAMS["q_r_td"].symbol
+    # a swinging leg's touchdown time: Newton's method from a start at or after it
+    newton = (
+        Stage(
+            (
+                (t_far, atd["t_far"]),
+                (
+                    t_start,
+                    sp.Piecewise((t0, atd["residual"].subs(t, t0) <= 0), (t_far, True)),
+                ),
+            ),
+            comment="a start at or after the touchdown: t0 if the foot is on or below the ground then, "
+            "else the time the body is q_r_td below the ground",
+        ),
+        Iterate(
+            state=((t_td, t_start),),
+            evaluate=(
+                Stage(
+                    ((slope, atd["slope"].subs(at)),),
+                    (
+                        Guard(
+                            slope < 0,
+                            "NO_TOUCHDOWN",
+                            "the foot descends toward the ground",
+                        ),
+                    ),
+                ),
+            ),
+            body=(),
+            update=(t_td - atd["residual"].subs(at) / slope,),
+            max_iter=sp.Integer(TOUCHDOWN_PASSES),
+            tol=sp.Float(1e-12),
+            scales=(t0,),
+            count=sym("touchdown_passes"),
+            fail_status="NOT_CONVERGED",
+            comment="Newton's method on the foot's height (concave: monotone from the right)",
+        ),
+    )
     apex_to_td = Kernel(
         name="apex_to_touchdown",
         summary="Ballistic descent from an apex to touchdown with the leg at q_r_td swinging from q_th_td at "
@@ -181,29 +228,34 @@ def flight_kernels() -> dict[str, Kernel]:
                 comment="the descent time of a leg held still (section 2.1)",
             ),
             Stage(
-                (
-                    (t_far, atd["t_far"]),
-                    (t_start, sp.Piecewise((t0, atd["residual"].subs(t, t0) <= 0), (t_far, True))),
-                ),
-                comment="a start at or after the touchdown: t0 if the foot is on or below the ground then, "
-                "else the time the body is q_r_td below the ground",
+                ((swinging, sp.Piecewise((0, sp.Eq(rate, 0)), (1, True))),),
+                comment="0: the leg held still (retraction_rate = 0), 1: a swinging leg",
             ),
-            Iterate(
-                state=((t_td, t_start),),
-                evaluate=(
-                    Stage(
-                        ((slope, atd["slope"].subs(at)),),
-                        (Guard(slope < 0, "NO_TOUCHDOWN", "the foot descends toward the ground"),),
+            Switch(
+                swinging,
+                (
+                    (
+                        0,
+                        (
+                            Stage(
+                                (
+                                    (t_td, atd["t_held"]),
+                                    (t_start, t0),
+                                    (t_far, t0),
+                                    (slope, atd["slope"].subs({t: t0, rate: 0})),
+                                    (sym("touchdown_passes"), sp.Integer(0)),
+                                ),
+                                comment="t0 with its first-order term in the rate (the rate's derivative; "
+                                "t0 itself here, as Newton's method from t0 gives bit for bit); no pass",
+                            ),
+                        ),
+                    ),
+                    (
+                        1,
+                        newton,
                     ),
                 ),
-                body=(),
-                update=(t_td - atd["residual"].subs(at) / slope,),
-                max_iter=sp.Integer(TOUCHDOWN_PASSES),
-                tol=sp.Float(1e-12),
-                scales=(t0,),
-                count=sym("touchdown_passes"),
-                fail_status="NOT_CONVERGED",
-                comment="Newton's method on the foot's height (concave: monotone from the right)",
+                comment="the touchdown time: closed form for a leg held still, else Newton's method",
             ),
             Stage(
                 ((angle, atd["angle"].subs(at)),),
