@@ -26,21 +26,25 @@ CHILD = r"""
 import json, sys, time
 t0 = time.perf_counter()
 import slipmaps
-t1 = time.perf_counter()
+t1, c1 = time.perf_counter(), time.process_time()
 name, role = sys.argv[1], sys.argv[2]
 call = slipmaps.apex_return if role == "apex_return" else slipmaps.apex_return_jacobian
 r = call(name, slipmaps.HUMAN_RUNNER, 1.0, 5.0, 0.35)
-t2 = time.perf_counter()
-print(json.dumps({"import_s": t1 - t0, "first_call_s": t2 - t1}))
+t2, c2 = time.perf_counter(), time.process_time()
+out = {"import_s": t1 - t0, "first_call_s": t2 - t1, "first_call_cpu_s": c2 - c1, "ok": bool(r.ok)}
+print(json.dumps(out))
 """
 
 
-def first_call(name: str, role: str) -> dict:
+def first_call(name: str, role: str, python: str = sys.executable) -> dict:
+    """The first ``role`` call of map ``name`` in a new ``python`` process with an empty numba cache:
+    its seconds (elapsed and the process's CPU), ``import slipmaps``'s, whether it succeeded, and the
+    1-min load as it started."""
     with tempfile.TemporaryDirectory(prefix="slipmaps-first-call-") as cache:
         env = dict(os.environ, NUMBA_CACHE_DIR=cache)
         load = os.getloadavg()[0]
         out = subprocess.run(
-            [sys.executable, "-c", CHILD, name, role], env=env, capture_output=True, text=True, check=True
+            [python, "-c", CHILD, name, role], env=env, capture_output=True, text=True, check=True
         )
     return {"map": name, "role": role, "load_1min": load, **json.loads(out.stdout.strip().splitlines()[-1])}
 

@@ -46,7 +46,6 @@ import numba
 import numpy as np
 import scipy
 import slipmaps
-from slipmaps.runtime.api import model
 from slipmaps.runtime.exact.reference import simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -91,6 +90,8 @@ def machine() -> dict:
 
 
 def states(n: int, seed: int = 0) -> tuple[np.ndarray, ...]:
+    from slipmaps.runtime.api import model  # here: the module's other helpers import with older trees
+
     rng = np.random.default_rng(seed)
     h, v, th = rng.uniform(1.0, 1.1, n), rng.uniform(3.0, 7.0, n), rng.uniform(0.30, 0.50, n)
     unique = min(n, 20_000)
