@@ -290,6 +290,20 @@ def _put(var: str, codes: list[str]) -> str:
     return f"({', '.join(f'{var}[{i}]' for i in range(len(codes)))},) = ({', '.join(codes)},)"
 
 
+#: A role kernel with at most this many output values checks them one by one before its store
+#: (a branch each, in registers); one with more stores its row and loops over it (support.finite).
+FINITE_CHAIN = 24
+
+
+def _finite_chain(codes: list[str]) -> str | None:
+    """``math.isfinite(c0) and math.isfinite(c1) ...`` over the distinct codes that are not numbers,
+    or None when there are more than :data:`FINITE_CHAIN` of them."""
+    names = list(dict.fromkeys(c for c in codes if not re.fullmatch(r"-?[0-9.]+(e-?[0-9]+)?", c)))
+    if len(names) > FINITE_CHAIN:
+        return None
+    return " and ".join(f"math.isfinite({c})" for c in names) or "True"
+
+
 def _passes_p(ctx: _Ctx, call: Call) -> bool:
     """Whether a call of a role kernel passes the caller's own parameter record ``p``: both have the
     same record and every field the callee reads from it is the caller's argument of that name."""
@@ -915,6 +929,7 @@ def lower(kernel: Kernel) -> dict:
         "returns": docs,
         "n_out": len(outputs),
         "store": _put("out", [forward.get(f.name, f.name) for f in outputs]),
+        "finite_chain": _finite_chain([forward.get(f.name, f.name) for f in outputs]) if not tails else None,
         "input_guard": input_guard,
         "body": body,
         "status": kernel.status,

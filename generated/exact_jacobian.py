@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
+#   support.py sha256:1012e23d16987856
 #   exact_stance.py sha256:299560de25340ae1
-#   flight_jacobian.py sha256:89c8df78cbc78d9f
+#   flight_jacobian.py sha256:de69e8149ca97ebb
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -213,6 +213,7 @@ def exact_stance_jacobian(x, p, out):
     d_liftoff_q_thd__q_thd_td = dext_liftoff_q_thd__q_thd_td
     d_liftoff_q_thd__k_c = dext_liftoff_q_thd__k_c
     d_liftoff_q_thd__k_d = dext_liftoff_q_thd__k_d
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -235,7 +236,6 @@ def exact_stance_jacobian(x, p, out):
         d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d,
         d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
         d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -583,6 +583,7 @@ def exact_apex_return_jacobian(x, p, out):
     d_touchdown_q_th__q_th_td = _j_td_q_th__q_th_td
     d_touchdown_q_th__ground = _j_td_q_th__ground
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -615,7 +616,6 @@ def exact_apex_return_jacobian(x, p, out):
         d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate, 0.0, 0.0, -1.0,
         0.0, 0.0, 1.0, 0.0, 0.0, 0.0, d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td,
         d_touchdown_q_th__ground, d_touchdown_q_th__retraction_rate, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK

@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
+#   support.py sha256:1012e23d16987856
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -24,61 +24,95 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATU
     STATUS_LIFTOFF_BACKWARD, STATUS_NOT_CONVERGED, STATUS_NO_TOUCHDOWN)
 
 NAN = math.nan
-_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
 def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_0(_pd__0, d_t0__q_th_td, g_f,
-        q_r_td, q_th_td, retraction_rate, t0):
+        q_r_td, q_th_td, retraction_rate, t0, out):
     """Branch swinging = 0 of apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate
     (outlined: derive/outline.py).
 
     Arguments: the caller's variables of the same names.
 
-    Returns a tuple:
+    Writes into out:
         the names every branch defines: in the order the caller binds them
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
-    # Total ops: 16
+    # Total ops: 42
     # t0 with its first-order term in the rate (the rate's derivative; t0 itself here, as Newton's method from
-    # t0 gives bit for bit); no pass
-    _x0 = q_r_td/g_f
-    _x1 = _x0*math.sin(q_th_td)
-    t_td = _x1*retraction_rate + t0
-    d_t_td__q_th_td = _x0*retraction_rate*math.cos(q_th_td) + d_t0__q_th_td
-    d_t_td__retraction_rate = _x1
+    # t0 gives bit for bit); no pass; the touchdown angle's sine and cosine likewise: those of q_th_td, with
+    # their derivatives
+    _x0 = math.sin(q_th_td)
+    _x1 = _x0*retraction_rate
+    _x2 = q_r_td/g_f
+    _x3 = _x1*_x2 + t0
+    t_td = _x3
+    _x4 = math.cos(q_th_td)
+    _x5 = _x4*retraction_rate
+    d_t_td__q_th_td = _x2*_x5 + d_t0__q_th_td
+    d_t_td__retraction_rate = _x0*_x2
     t_start = t0
     t_far = t0
     foot_slope = -g_f*t0
-    _x2 = _pd__0*g_f
-    d_foot_slope__b_y_apex = -_x2
+    _x6 = _pd__0*g_f
+    d_foot_slope__b_y_apex = -_x6
     d_foot_slope__q_th_td = -d_t0__q_th_td*g_f
-    d_foot_slope__ground = _x2
+    d_foot_slope__ground = _x6
+    touchdown_angle = _x3*retraction_rate + q_th_td
+    _x7 = _pd__0*retraction_rate
+    d_touchdown_angle__b_y_apex = _x7
+    d_touchdown_angle__q_th_td = d_t_td__q_th_td*retraction_rate + 1.0
+    d_touchdown_angle__ground = -_x7
+    d_touchdown_angle__retraction_rate = _x3 + d_t_td__retraction_rate*retraction_rate
+    _x8 = _x0 + _x5*t0
+    sin_td = _x8
+    _pd__1 = _x5
+    _x9 = _pd__0*_pd__1
+    d_sin_td__b_y_apex = _x9
+    _x10 = _x1*t0
+    d_sin_td__q_th_td = _pd__1*d_t0__q_th_td - _x10 + _x4
+    d_sin_td__ground = -_x9
+    d_sin_td__retraction_rate = _x4*t0
+    cos_td = -_x10 + _x4
+    _pd__2 = -_x1
+    _x11 = _pd__0*_pd__2
+    d_cos_td__b_y_apex = _x11
+    d_cos_td__q_th_td = _pd__2*d_t0__q_th_td - _x8
+    d_cos_td__ground = -_x11
+    d_cos_td__retraction_rate = -_x0*t0
     # tangents as every branch names them
-    _x3 = -_pd__0
+    _x12 = -_pd__0
     d_t_far__q_th_td = d_t0__q_th_td
     d_t_start__b_y_apex = _pd__0
     d_t_start__q_th_td = d_t0__q_th_td
-    d_t_start__ground = _x3
+    d_t_start__ground = _x12
     d_t_td__b_y_apex = _pd__0
-    d_t_td__ground = _x3
+    d_t_td__ground = _x12
     # (internal helper: its callers check that their outputs are finite)
-    return (t_td, d_t_td__q_th_td, d_t_td__retraction_rate, d_t_td__b_y_apex, d_t_td__ground, STATUS_OK)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19],) = (t_td, d_t_td__q_th_td,
+        d_t_td__retraction_rate, touchdown_angle, d_touchdown_angle__b_y_apex, d_touchdown_angle__q_th_td,
+        d_touchdown_angle__ground, d_touchdown_angle__retraction_rate, sin_td, d_sin_td__b_y_apex,
+        d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td, d_cos_td__b_y_apex,
+        d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate, d_t_td__b_y_apex, d_t_td__ground,)
+    return STATUS_OK
 
 
 @njit(cache=True, error_model="numpy")
 def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_1(_pd__0, d_drop__q_th_td,
-        d_t0__q_th_td, drop, g_f, q_r_td, q_th_td, retraction_rate, t0):
+        d_t0__q_th_td, drop, g_f, q_r_td, q_th_td, retraction_rate, t0, out):
     """Branch swinging = 1 of apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate
     (outlined: derive/outline.py).
 
     Arguments: the caller's variables of the same names.
 
-    Returns a tuple:
+    Writes into out:
         the names every branch defines: in the order the caller binds them
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
-    # Total ops: 114
+    # Total ops: 133
     # a start at or after the touchdown: t0 if the foot is on or below the ground then, else the time the body
     # is q_r_td below the ground
     _x0 = (1.0/math.sqrt(g_f))
@@ -88,15 +122,15 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_1(_p
     _x4 = _x0*_x3
     t_far = _x4
     _x5 = _x0/_x3
-    _pd__1 = _x5
-    d_t_far__q_th_td = _pd__1*d_drop__q_th_td - _x5*q_r_td*math.sin(q_th_td)
+    _pd__3 = _x5
+    d_t_far__q_th_td = _pd__3*d_drop__q_th_td - _x5*q_r_td*math.sin(q_th_td)
     _x6 = (q_r_td*(_x2 - math.cos(q_th_td + retraction_rate*t0)) <= 0.0)
     t_start = ((t0) if _x6 else (_x4))
-    _pd__2 = ((1.0) if _x6 else (0.0))
-    _pd__3 = ((0.0) if _x6 else (1.0))
-    _x7 = _pd__0*_pd__2 + _pd__1*_pd__3
+    _pd__4 = ((1.0) if _x6 else (0.0))
+    _pd__5 = ((0.0) if _x6 else (1.0))
+    _x7 = _pd__0*_pd__4 + _pd__3*_pd__5
     d_t_start__b_y_apex = _x7
-    d_t_start__q_th_td = _pd__2*d_t0__q_th_td + _pd__3*d_t_far__q_th_td
+    d_t_start__q_th_td = _pd__4*d_t0__q_th_td + _pd__5*d_t_far__q_th_td
     d_t_start__ground = -_x7
     # Newton's method on the foot's height (concave: monotone from the right)
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
@@ -109,22 +143,22 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_1(_p
     for _it0 in range(_last0 + 1):
         (t_td, d_t_td__b_y_apex, d_t_td__q_th_td, d_t_td__ground, d_t_td__retraction_rate, ) = _pk0
         if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and touchdown_passes > 0.0:
-            return _NAN5 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         _x8 = (0.5)*g_f
         _x9 = retraction_rate*t_td
         _x10 = _x9 + q_th_td
         _x11 = q_r_td*math.sin(_x10)
         foot_slope = _x11*retraction_rate + _x8*(t0 - t_td) - _x8*(t0 + t_td)
         _x12 = math.cos(_x10)
-        _pd__4 = _x12*q_r_td*retraction_rate**2 - g_f
-        d_foot_slope__b_y_apex = _pd__4*d_t_td__b_y_apex
+        _pd__6 = _x12*q_r_td*retraction_rate**2 - g_f
+        d_foot_slope__b_y_apex = _pd__6*d_t_td__b_y_apex
         _x13 = _x12*q_r_td
-        d_foot_slope__q_th_td = _pd__4*d_t_td__q_th_td + _x13*retraction_rate
-        d_foot_slope__ground = _pd__4*d_t_td__ground
-        d_foot_slope__retraction_rate = _pd__4*d_t_td__retraction_rate + _x11 + _x13*_x9
+        d_foot_slope__q_th_td = _pd__6*d_t_td__q_th_td + _x13*retraction_rate
+        d_foot_slope__ground = _pd__6*d_t_td__ground
+        d_foot_slope__retraction_rate = _pd__6*d_t_td__retraction_rate + _x11 + _x13*_x9
         # the foot descends toward the ground
         if not ((foot_slope < 0.0)):
-            return _NAN5 + (STATUS_NO_TOUCHDOWN,)
+            return fail(out, STATUS_NO_TOUCHDOWN)
         if _conv0 or _it0 == _last0:
             break
         # next values
@@ -135,18 +169,18 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_1(_p
         _x18 = q_th_td + retraction_rate*t_td
         _x19 = _x15*_x17 + q_r_td*(-math.cos(_x18) + math.cos(q_th_td))
         t_td__next = -_x14*_x19 + t_td
-        _pd__5 = _x14**2*_x19
+        _pd__7 = _x14**2*_x19
         _x20 = _x15*_x16
-        _pd__6 = -_x14*(_x17 + _x20)
+        _pd__8 = -_x14*(_x17 + _x20)
         _x21 = math.sin(_x18)
         _x22 = _x21*q_r_td
-        _pd__7 = -_x14*(-_x17 + _x20 + _x22*retraction_rate) + 1.0
-        _x23 = _pd__0*_pd__6
-        d_t_td__next__b_y_apex = _pd__5*d_foot_slope__b_y_apex + _pd__7*d_t_td__b_y_apex + _x23
-        d_t_td__next__q_th_td = (_pd__5*d_foot_slope__q_th_td + _pd__6*d_t0__q_th_td + _pd__7*d_t_td__q_th_td
+        _pd__9 = -_x14*(-_x17 + _x20 + _x22*retraction_rate) + 1.0
+        _x23 = _pd__0*_pd__8
+        d_t_td__next__b_y_apex = _pd__7*d_foot_slope__b_y_apex + _pd__9*d_t_td__b_y_apex + _x23
+        d_t_td__next__q_th_td = (_pd__7*d_foot_slope__q_th_td + _pd__8*d_t0__q_th_td + _pd__9*d_t_td__q_th_td
             - _x14*q_r_td*(_x21 - math.sin(q_th_td)))
-        d_t_td__next__ground = _pd__5*d_foot_slope__ground + _pd__7*d_t_td__ground - _x23
-        d_t_td__next__retraction_rate = (_pd__5*d_foot_slope__retraction_rate + _pd__7*d_t_td__retraction_rate
+        d_t_td__next__ground = _pd__7*d_foot_slope__ground + _pd__9*d_t_td__ground - _x23
+        d_t_td__next__retraction_rate = (_pd__7*d_foot_slope__retraction_rate + _pd__9*d_t_td__retraction_rate
             - _x14*_x22*t_td)
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -155,8 +189,35 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_1(_p
             d_t_td__next__retraction_rate, )
         _pk0 = _pkn0
         touchdown_passes += 1.0
+    # the leg angle at touchdown, its sine and cosine
+    _x24 = q_th_td + retraction_rate*t_td
+    touchdown_angle = _x24
+    d_touchdown_angle__b_y_apex = d_t_td__b_y_apex*retraction_rate
+    d_touchdown_angle__q_th_td = d_t_td__q_th_td*retraction_rate + 1.0
+    d_touchdown_angle__ground = d_t_td__ground*retraction_rate
+    d_touchdown_angle__retraction_rate = d_t_td__retraction_rate*retraction_rate + t_td
+    _x25 = math.sin(_x24)
+    sin_td = _x25
+    _x26 = math.cos(_x24)
+    _pd__10 = _x26
+    d_sin_td__b_y_apex = _pd__10*d_touchdown_angle__b_y_apex
+    d_sin_td__q_th_td = _pd__10*d_touchdown_angle__q_th_td
+    d_sin_td__ground = _pd__10*d_touchdown_angle__ground
+    d_sin_td__retraction_rate = _pd__10*d_touchdown_angle__retraction_rate
+    cos_td = _x26
+    _pd__11 = -_x25
+    d_cos_td__b_y_apex = _pd__11*d_touchdown_angle__b_y_apex
+    d_cos_td__q_th_td = _pd__11*d_touchdown_angle__q_th_td
+    d_cos_td__ground = _pd__11*d_touchdown_angle__ground
+    d_cos_td__retraction_rate = _pd__11*d_touchdown_angle__retraction_rate
     # (internal helper: its callers check that their outputs are finite)
-    return (t_td, d_t_td__q_th_td, d_t_td__retraction_rate, d_t_td__b_y_apex, d_t_td__ground, STATUS_OK)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19],) = (t_td, d_t_td__q_th_td,
+        d_t_td__retraction_rate, touchdown_angle, d_touchdown_angle__b_y_apex, d_touchdown_angle__q_th_td,
+        d_touchdown_angle__ground, d_touchdown_angle__retraction_rate, sin_td, d_sin_td__b_y_apex,
+        d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td, d_cos_td__b_y_apex,
+        d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate, d_t_td__b_y_apex, d_t_td__ground,)
+    return STATUS_OK
 
 
 @njit(cache=True, error_model="numpy")
@@ -196,7 +257,7 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 86
+    # Total ops: 95
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground)
@@ -222,72 +283,98 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
     # the touchdown time: closed form for a leg held still, else Newton's method
     if swinging == 0.0:
         # branch swinging = 0
+        _o0 = carray(stack(20), 20)
         _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_0(_pd__0,
-            d_t0__q_th_td, g_f, q_r_td, q_th_td, retraction_rate, t0))
-        if _c0[5] != STATUS_OK:
-            return fail(out, _c0[5])
-        t_td = _c0[0]
-        d_t_td__q_th_td = _c0[1]
-        d_t_td__retraction_rate = _c0[2]
-        d_t_td__b_y_apex = _c0[3]
-        d_t_td__ground = _c0[4]
+            d_t0__q_th_td, g_f, q_r_td, q_th_td, retraction_rate, t0, _o0))
+        if _c0 != STATUS_OK:
+            return fail(out, _c0)
+        t_td = _o0[0]
+        d_t_td__q_th_td = _o0[1]
+        d_t_td__retraction_rate = _o0[2]
+        touchdown_angle = _o0[3]
+        d_touchdown_angle__b_y_apex = _o0[4]
+        d_touchdown_angle__q_th_td = _o0[5]
+        d_touchdown_angle__ground = _o0[6]
+        d_touchdown_angle__retraction_rate = _o0[7]
+        sin_td = _o0[8]
+        d_sin_td__b_y_apex = _o0[9]
+        d_sin_td__q_th_td = _o0[10]
+        d_sin_td__ground = _o0[11]
+        d_sin_td__retraction_rate = _o0[12]
+        cos_td = _o0[13]
+        d_cos_td__b_y_apex = _o0[14]
+        d_cos_td__q_th_td = _o0[15]
+        d_cos_td__ground = _o0[16]
+        d_cos_td__retraction_rate = _o0[17]
+        d_t_td__b_y_apex = _o0[18]
+        d_t_td__ground = _o0[19]
     elif swinging == 1.0:
         # branch swinging = 1
+        _o1 = carray(stack(20), 20)
         _c1 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_1(_pd__0,
-            d_drop__q_th_td, d_t0__q_th_td, drop, g_f, q_r_td, q_th_td, retraction_rate, t0))
-        if _c1[5] != STATUS_OK:
-            return fail(out, _c1[5])
-        t_td = _c1[0]
-        d_t_td__q_th_td = _c1[1]
-        d_t_td__retraction_rate = _c1[2]
-        d_t_td__b_y_apex = _c1[3]
-        d_t_td__ground = _c1[4]
+            d_drop__q_th_td, d_t0__q_th_td, drop, g_f, q_r_td, q_th_td, retraction_rate, t0, _o1))
+        if _c1 != STATUS_OK:
+            return fail(out, _c1)
+        t_td = _o1[0]
+        d_t_td__q_th_td = _o1[1]
+        d_t_td__retraction_rate = _o1[2]
+        touchdown_angle = _o1[3]
+        d_touchdown_angle__b_y_apex = _o1[4]
+        d_touchdown_angle__q_th_td = _o1[5]
+        d_touchdown_angle__ground = _o1[6]
+        d_touchdown_angle__retraction_rate = _o1[7]
+        sin_td = _o1[8]
+        d_sin_td__b_y_apex = _o1[9]
+        d_sin_td__q_th_td = _o1[10]
+        d_sin_td__ground = _o1[11]
+        d_sin_td__retraction_rate = _o1[12]
+        cos_td = _o1[13]
+        d_cos_td__b_y_apex = _o1[14]
+        d_cos_td__q_th_td = _o1[15]
+        d_cos_td__ground = _o1[16]
+        d_cos_td__retraction_rate = _o1[17]
+        d_t_td__b_y_apex = _o1[18]
+        d_t_td__ground = _o1[19]
     else:
         return fail(out, STATUS_INVALID_INPUT)
-    # the leg angle at touchdown
-    touchdown_angle = q_th_td + retraction_rate*t_td
-    d_touchdown_angle__b_y_apex = d_t_td__b_y_apex*retraction_rate
-    d_touchdown_angle__q_th_td = d_t_td__q_th_td*retraction_rate + 1.0
-    d_touchdown_angle__ground = d_t_td__ground*retraction_rate
-    d_touchdown_angle__retraction_rate = d_t_td__retraction_rate*retraction_rate + t_td
     # the leg above the horizontal
     if not ((abs(touchdown_angle) < (0.5)*math.pi)):
         return fail(out, STATUS_NO_TOUCHDOWN)
     # touchdown state from the derived Cartesian -> polar map
     touchdown_q_r = q_r_td
-    _x2 = math.sin(touchdown_angle)
-    _x3 = math.cos(touchdown_angle)
-    _x4 = _x3*g_f
-    _x5 = _x2*b_xd_apex + _x4*t_td
-    touchdown_q_rd = -_x5
-    _pd__8 = -_x4
-    _x6 = _x2*g_f*t_td - _x3*b_xd_apex
-    _pd__9 = _x6
-    d_touchdown_q_rd__b_y_apex = _pd__8*d_t_td__b_y_apex + _pd__9*d_touchdown_angle__b_y_apex
-    d_touchdown_q_rd__b_xd_apex = -_x2
-    d_touchdown_q_rd__q_th_td = _pd__8*d_t_td__q_th_td + _pd__9*d_touchdown_angle__q_th_td
-    d_touchdown_q_rd__ground = _pd__8*d_t_td__ground + _pd__9*d_touchdown_angle__ground
-    d_touchdown_q_rd__retraction_rate = (_pd__8*d_t_td__retraction_rate
-        + _pd__9*d_touchdown_angle__retraction_rate)
+    _x2 = g_f*t_td
+    touchdown_q_rd = -_x2*cos_td - b_xd_apex*sin_td
+    _pd__12 = -_x2
+    _pd__13 = -cos_td*g_f
+    d_touchdown_q_rd__b_y_apex = (_pd__12*d_cos_td__b_y_apex + _pd__13*d_t_td__b_y_apex
+        - b_xd_apex*d_sin_td__b_y_apex)
+    d_touchdown_q_rd__q_th_td = (_pd__12*d_cos_td__q_th_td + _pd__13*d_t_td__q_th_td
+        - b_xd_apex*d_sin_td__q_th_td)
+    d_touchdown_q_rd__ground = _pd__12*d_cos_td__ground + _pd__13*d_t_td__ground - b_xd_apex*d_sin_td__ground
+    d_touchdown_q_rd__retraction_rate = (_pd__12*d_cos_td__retraction_rate + _pd__13*d_t_td__retraction_rate
+        - b_xd_apex*d_sin_td__retraction_rate)
     touchdown_q_th = touchdown_angle
-    _x7 = (1.0/q_r_td)
-    touchdown_q_thd = _x6*_x7
-    _pd__10 = _x2*_x7*g_f
-    _pd__11 = _x5*_x7
-    d_touchdown_q_thd__b_y_apex = _pd__10*d_t_td__b_y_apex + _pd__11*d_touchdown_angle__b_y_apex
-    d_touchdown_q_thd__b_xd_apex = -_x3*_x7
-    d_touchdown_q_thd__q_th_td = _pd__10*d_t_td__q_th_td + _pd__11*d_touchdown_angle__q_th_td
-    d_touchdown_q_thd__ground = _pd__10*d_t_td__ground + _pd__11*d_touchdown_angle__ground
-    d_touchdown_q_thd__retraction_rate = (_pd__10*d_t_td__retraction_rate
-        + _pd__11*d_touchdown_angle__retraction_rate)
+    _x3 = (1.0/q_r_td)
+    touchdown_q_thd = _x3*(-b_xd_apex*cos_td + g_f*sin_td*t_td)
+    _pd__14 = -_x3*b_xd_apex
+    _pd__15 = _x2*_x3
+    _pd__16 = _x3*g_f*sin_td
+    d_touchdown_q_thd__b_y_apex = (_pd__14*d_cos_td__b_y_apex + _pd__15*d_sin_td__b_y_apex
+        + _pd__16*d_t_td__b_y_apex)
+    d_touchdown_q_thd__b_xd_apex = -_x3*cos_td
+    d_touchdown_q_thd__q_th_td = (_pd__14*d_cos_td__q_th_td + _pd__15*d_sin_td__q_th_td
+        + _pd__16*d_t_td__q_th_td)
+    d_touchdown_q_thd__ground = _pd__14*d_cos_td__ground + _pd__15*d_sin_td__ground + _pd__16*d_t_td__ground
+    d_touchdown_q_thd__retraction_rate = (_pd__14*d_cos_td__retraction_rate
+        + _pd__15*d_sin_td__retraction_rate + _pd__16*d_t_td__retraction_rate)
     t_flight = t_td
-    foot_x = _x2*q_r_td + b_xd_apex*t_td
-    _pd__12 = _x3*q_r_td
-    d_foot_x__b_y_apex = _pd__12*d_touchdown_angle__b_y_apex + b_xd_apex*d_t_td__b_y_apex
-    d_foot_x__q_th_td = _pd__12*d_touchdown_angle__q_th_td + b_xd_apex*d_t_td__q_th_td
-    d_foot_x__ground = _pd__12*d_touchdown_angle__ground + b_xd_apex*d_t_td__ground
-    d_foot_x__retraction_rate = _pd__12*d_touchdown_angle__retraction_rate + b_xd_apex*d_t_td__retraction_rate
+    foot_x = b_xd_apex*t_td + q_r_td*sin_td
+    d_foot_x__b_y_apex = b_xd_apex*d_t_td__b_y_apex + d_sin_td__b_y_apex*q_r_td
+    d_foot_x__q_th_td = b_xd_apex*d_t_td__q_th_td + d_sin_td__q_th_td*q_r_td
+    d_foot_x__ground = b_xd_apex*d_t_td__ground + d_sin_td__ground*q_r_td
+    d_foot_x__retraction_rate = b_xd_apex*d_t_td__retraction_rate + d_sin_td__retraction_rate*q_r_td
     # derivatives of the outputs
+    d_touchdown_q_rd__b_xd_apex = -sin_td
     d_touchdown_q_th__b_y_apex = d_touchdown_angle__b_y_apex
     d_touchdown_q_th__q_th_td = d_touchdown_angle__q_th_td
     d_touchdown_q_th__ground = d_touchdown_angle__ground

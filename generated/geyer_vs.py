@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c3f273b7986622bd
-#   geyer.py sha256:4ceaa707d89ddf13
+#   support.py sha256:1012e23d16987856
+#   flight.py sha256:a75b93d7de718e56
+#   geyer.py sha256:466d0bfe5cd60358
 # ----------------------------------------------------------------------------------------------
 """Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
 apex-return kernels."""
@@ -341,12 +341,16 @@ def geyer_vs_stance(x, p, out):
     liftoff_q_rd = i_liftoff_q_rd
     liftoff_q_th = i_liftoff_q_th
     liftoff_q_thd = i_liftoff_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression)
+            and math.isfinite(P_c_decompression) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
         liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -612,10 +616,10 @@ def geyer_vs_state_at(x, p, out):
         - 2.0*i_ba_omega*(-_x48*_x50 + _x52*i_ba_a) + i_bottom_q_th))
     q_thd = ((_x53*(P_c_compression*t/i_t_bottom + p_td)/c_q_r**2) if _x44
         else (_x53*(P_c_decompression*_x45/(-i_t_bottom + i_t_stance) + i_p_b)/(_x47**2*l0**2)))
-    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     return STATUS_OK
 
 
@@ -741,13 +745,18 @@ def geyer_vs_apex_return(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10]) and math.isfinite(_o1[11])
+            and math.isfinite(_o1[12])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent,
         liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,
         _o1[10], _o1[11], _o1[12],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 

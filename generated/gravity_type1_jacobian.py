@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight_jacobian.py sha256:89c8df78cbc78d9f
-#   geyer_jacobian.py sha256:f0e0f0ee9bacbc8d
+#   support.py sha256:1012e23d16987856
+#   flight_jacobian.py sha256:de69e8149ca97ebb
+#   geyer_jacobian.py sha256:7a8915e24c07fd59
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type1: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -533,6 +533,7 @@ def gravity_type1_stance_jacobian(x, p, out):
     d_liftoff_q_th__q_th_td = d_i_liftoff_q_th__q_th_td
     d_liftoff_q_th__q_thd_td = d_i_liftoff_q_th__q_thd_td
     d_liftoff_q_th__k = d_i_liftoff_q_th__k
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -552,7 +553,6 @@ def gravity_type1_stance_jacobian(x, p, out):
         d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
         d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td,
         d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -865,6 +865,7 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     d_touchdown_q_th__ground = _j_td_q_th__ground
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     d_P_c__k = _j_P_c__k
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -895,7 +896,6 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
         d_touchdown_q_th__retraction_rate, 0.0, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td,
         d_P_c__ground, d_P_c__retraction_rate, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK

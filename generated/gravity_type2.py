@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c3f273b7986622bd
-#   geyer.py sha256:4ceaa707d89ddf13
+#   support.py sha256:1012e23d16987856
+#   flight.py sha256:a75b93d7de718e56
+#   geyer.py sha256:466d0bfe5cd60358
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return
 kernels."""
@@ -232,12 +232,15 @@ def gravity_type2_stance(x, p, out):
         liftoff_q_rd = i_liftoff_q_rd
     else:
         return fail(out, STATUS_INVALID_INPUT)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         ) = (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, P_c, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -423,10 +426,10 @@ def gravity_type2_state_at(x, p, out):
     q_th = _c2[2]
     # the momentum at t
     q_thd = (P_c*(-ramp + 1.0 + ramp*t/i_t_stance) + p_td)/(m*q_r**2)
-    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     return STATUS_OK
 
 
@@ -550,13 +553,17 @@ def gravity_type2_apex_return(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10]) and math.isfinite(_o1[11])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r,
         liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],
         _o1[11],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 

@@ -6,16 +6,16 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c3f273b7986622bd
-#   geyer.py sha256:4ceaa707d89ddf13
-#   geyer_vs.py sha256:08ed6b7d0983088c
-#   gravity_type0.py sha256:1ae04de240aec97c
-#   gravity_type1.py sha256:02eec82721d97ec3
-#   gravity_type2.py sha256:1dc28eb4c89cc48c
-#   gravity_type3.py sha256:a90033610a6399e3
-#   gravity_type4.py sha256:f10db4ae1bbe2696
-#   gravity_type5.py sha256:41aafd316b51cc3e
+#   support.py sha256:1012e23d16987856
+#   flight.py sha256:a75b93d7de718e56
+#   geyer.py sha256:466d0bfe5cd60358
+#   geyer_vs.py sha256:3cd6cc8171df3dbf
+#   gravity_type0.py sha256:ebefe27fd5b5212a
+#   gravity_type1.py sha256:089d75c413a99da5
+#   gravity_type2.py sha256:134de98cc6b0e395
+#   gravity_type3.py sha256:e155e8cf6c61786f
+#   gravity_type4.py sha256:46ba3275b963f094
+#   gravity_type5.py sha256:6b0f36a3aab94d08
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -730,12 +730,15 @@ def iterative_stance_zeroth_geyer(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -855,12 +858,16 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -929,12 +936,15 @@ def iterative_stance_zeroth_held(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1007,12 +1017,16 @@ def iterative_apex_return_zeroth_held(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1081,12 +1095,15 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1159,12 +1176,16 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1233,12 +1254,15 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1311,12 +1335,16 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1385,12 +1413,15 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1463,12 +1494,16 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1537,12 +1572,15 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1615,12 +1653,16 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1689,12 +1731,15 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1767,12 +1812,16 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1841,12 +1890,15 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1919,12 +1971,16 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1993,12 +2049,15 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, passes,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -2071,12 +2130,16 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 

@@ -6,16 +6,16 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight_jacobian.py sha256:89c8df78cbc78d9f
-#   geyer_jacobian.py sha256:f0e0f0ee9bacbc8d
-#   geyer_vs_jacobian.py sha256:4caa2e0b30d497f1
-#   gravity_type0_jacobian.py sha256:26b855543aae933f
-#   gravity_type1_jacobian.py sha256:53922bb1a9cbf044
-#   gravity_type2_jacobian.py sha256:e2cd4b16f2ec4b31
-#   gravity_type3_jacobian.py sha256:dc696a885ff81658
-#   gravity_type4_jacobian.py sha256:dd727157da411a5b
-#   gravity_type5_jacobian.py sha256:2d533215ccefaeea
+#   support.py sha256:1012e23d16987856
+#   flight_jacobian.py sha256:de69e8149ca97ebb
+#   geyer_jacobian.py sha256:7a8915e24c07fd59
+#   geyer_vs_jacobian.py sha256:d096cab4cfb8aca7
+#   gravity_type0_jacobian.py sha256:efb41d6075f3bff5
+#   gravity_type1_jacobian.py sha256:650e0fd4240c0441
+#   gravity_type2_jacobian.py sha256:8dc47fbee93776b2
+#   gravity_type3_jacobian.py sha256:75431d77cc206669
+#   gravity_type4_jacobian.py sha256:928cae4a2dfd50aa
+#   gravity_type5_jacobian.py sha256:90b22e88dbd42abf
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -1761,6 +1761,7 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -1774,7 +1775,6 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -2208,6 +2208,7 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -2221,7 +2222,6 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -2356,6 +2356,7 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -2369,7 +2370,6 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -2504,6 +2504,7 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -2517,7 +2518,6 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -2652,6 +2652,7 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -2665,7 +2666,6 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -2800,6 +2800,7 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -2813,7 +2814,6 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -2948,6 +2948,7 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -2961,7 +2962,6 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -3096,6 +3096,7 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -3109,7 +3110,6 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -3244,6 +3244,7 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
         out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
@@ -3257,7 +3258,6 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
         _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
         0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
         _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK

@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c3f273b7986622bd
-#   geyer.py sha256:4ceaa707d89ddf13
-#   geyer_vs.py sha256:08ed6b7d0983088c
-#   gravity_type0.py sha256:1ae04de240aec97c
-#   gravity_type1.py sha256:02eec82721d97ec3
-#   gravity_type2.py sha256:1dc28eb4c89cc48c
-#   gravity_type3.py sha256:a90033610a6399e3
-#   gravity_type4.py sha256:f10db4ae1bbe2696
-#   gravity_type5.py sha256:41aafd316b51cc3e
-#   iterative.py sha256:2bb2fea98d33c1b8
+#   support.py sha256:1012e23d16987856
+#   flight.py sha256:a75b93d7de718e56
+#   geyer.py sha256:466d0bfe5cd60358
+#   geyer_vs.py sha256:3cd6cc8171df3dbf
+#   gravity_type0.py sha256:ebefe27fd5b5212a
+#   gravity_type1.py sha256:089d75c413a99da5
+#   gravity_type2.py sha256:134de98cc6b0e395
+#   gravity_type3.py sha256:e155e8cf6c61786f
+#   gravity_type4.py sha256:46ba3275b963f094
+#   gravity_type5.py sha256:6b0f36a3aab94d08
+#   iterative.py sha256:574a4ee4157d47f7
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -447,12 +447,15 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -571,12 +574,16 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -645,12 +652,15 @@ def iterative_report_stance_zeroth_held(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -724,12 +734,16 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -799,12 +813,15 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -878,12 +895,16 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -953,12 +974,15 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1032,12 +1056,16 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1107,12 +1135,15 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1186,12 +1217,16 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1261,12 +1296,15 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1340,12 +1378,16 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1415,12 +1457,15 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1494,12 +1539,16 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1569,12 +1618,15 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1648,12 +1700,16 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1723,12 +1779,15 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -1802,12 +1861,16 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 

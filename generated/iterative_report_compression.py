@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   geyer.py sha256:4ceaa707d89ddf13
-#   geyer_vs.py sha256:08ed6b7d0983088c
-#   gravity_type0.py sha256:1ae04de240aec97c
-#   gravity_type1.py sha256:02eec82721d97ec3
-#   gravity_type2.py sha256:1dc28eb4c89cc48c
-#   gravity_type3.py sha256:a90033610a6399e3
-#   gravity_type4.py sha256:f10db4ae1bbe2696
-#   gravity_type5.py sha256:41aafd316b51cc3e
-#   iterative.py sha256:2bb2fea98d33c1b8
-#   iterative_report.py sha256:d551fe7b80b7e501
+#   support.py sha256:1012e23d16987856
+#   geyer.py sha256:466d0bfe5cd60358
+#   geyer_vs.py sha256:3cd6cc8171df3dbf
+#   gravity_type0.py sha256:ebefe27fd5b5212a
+#   gravity_type1.py sha256:089d75c413a99da5
+#   gravity_type2.py sha256:134de98cc6b0e395
+#   gravity_type3.py sha256:e155e8cf6c61786f
+#   gravity_type4.py sha256:46ba3275b963f094
+#   gravity_type5.py sha256:6b0f36a3aab94d08
+#   iterative.py sha256:574a4ee4157d47f7
+#   iterative_report.py sha256:541a3c332ebe1f9e
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -125,10 +125,11 @@ def iterative_report_compression_zeroth_geyer(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -192,10 +193,11 @@ def iterative_report_compression_zeroth_held(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -263,10 +265,11 @@ def iterative_report_compression_zeroth_gravity_type0(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -334,10 +337,11 @@ def iterative_report_compression_zeroth_gravity_type1(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -405,10 +409,11 @@ def iterative_report_compression_zeroth_gravity_type2(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -476,10 +481,11 @@ def iterative_report_compression_zeroth_gravity_type3(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -547,10 +553,11 @@ def iterative_report_compression_zeroth_gravity_type4(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -618,10 +625,11 @@ def iterative_report_compression_zeroth_gravity_type5(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -689,10 +697,11 @@ def iterative_report_compression_zeroth_geyer_vs(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c3f273b7986622bd
+#   support.py sha256:1012e23d16987856
+#   flight.py sha256:a75b93d7de718e56
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom ->
 liftoff."""
@@ -169,10 +169,11 @@ def iterative_report_decompression(x, p, out):
     end_q_rd = liftoff_q_rd
     end_q_th = liftoff_q_th
     end_q_thd = liftoff_q_thd
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK
 
 
@@ -261,11 +262,13 @@ def iterative_report_decompression_apex(x, p, out):
     apex_height = _c1[0]
     apex_speed = _c1[1]
     t_ascent = _c1[2]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(_o0[0])
+            and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd)
+            and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7],) = (apex_height, apex_speed, _o0[0],
         t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e0347acdae98a5cd
-#   flight.py sha256:c3f273b7986622bd
-#   geyer_vs.py sha256:08ed6b7d0983088c
+#   support.py sha256:1012e23d16987856
+#   flight.py sha256:a75b93d7de718e56
+#   geyer_vs.py sha256:3cd6cc8171df3dbf
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -68,11 +68,12 @@ def apex_to_touchdown_entry(x, p, out):
     touchdown_q_thd = _c0[3]
     t_flight = _c0[4]
     foot_x = _c0[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th)
+            and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(foot_x)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5],) = (touchdown_q_r, touchdown_q_rd, touchdown_q_th,
         touchdown_q_thd, t_flight, foot_x,)
-    # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
 
 
@@ -117,10 +118,11 @@ def liftoff_to_apex_entry(x, p, out):
     t_flight = _c0[2]
     dx_flight = _c0[3]
     apex_b_x = _c0[4]
-    (out[0], out[1], out[2], out[3], out[4],) = (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight)
+            and math.isfinite(dx_flight) and math.isfinite(apex_b_x)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4],) = (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,)
     return STATUS_OK
 
 
@@ -161,10 +163,11 @@ def stance_polar_rhs_entry(x, p, out):
     d_q_rd = _c0[1]
     d_q_th = _c0[2]
     d_q_thd = _c0[3]
-    (out[0], out[1], out[2], out[3],) = (d_q_r, d_q_rd, d_q_th, d_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(d_q_r) and math.isfinite(d_q_rd) and math.isfinite(d_q_th)
+            and math.isfinite(d_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3],) = (d_q_r, d_q_rd, d_q_th, d_q_thd,)
     return STATUS_OK
 
 
@@ -205,10 +208,11 @@ def stance_cartesian_rhs_entry(x, p, out):
     d_b_xd = _c0[1]
     d_b_y = _c0[2]
     d_b_yd = _c0[3]
-    (out[0], out[1], out[2], out[3],) = (d_b_x, d_b_xd, d_b_y, d_b_yd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(d_b_x) and math.isfinite(d_b_xd) and math.isfinite(d_b_y)
+            and math.isfinite(d_b_yd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3],) = (d_b_x, d_b_xd, d_b_y, d_b_yd,)
     return STATUS_OK
 
 
@@ -243,10 +247,10 @@ def stance_energy_entry(x, p, out):
     # slip_model.stance_energy
     _c0 = stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s)
     energy = _c0
-    (out[0],) = (energy,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(energy)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0],) = (energy,)
     return STATUS_OK
 
 
@@ -287,10 +291,11 @@ def polar_to_cartesian_entry(x, p, out):
     out_b_xd = _c0[1]
     out_b_y = _c0[2]
     out_b_yd = _c0[3]
-    (out[0], out[1], out[2], out[3],) = (out_b_x, out_b_xd, out_b_y, out_b_yd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(out_b_x) and math.isfinite(out_b_xd) and math.isfinite(out_b_y)
+            and math.isfinite(out_b_yd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3],) = (out_b_x, out_b_xd, out_b_y, out_b_yd,)
     return STATUS_OK
 
 
@@ -331,10 +336,11 @@ def cartesian_to_polar_entry(x, p, out):
     out_q_rd = _c0[1]
     out_q_th = _c0[2]
     out_q_thd = _c0[3]
-    (out[0], out[1], out[2], out[3],) = (out_q_r, out_q_rd, out_q_th, out_q_thd,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(out_q_r) and math.isfinite(out_q_rd) and math.isfinite(out_q_th)
+            and math.isfinite(out_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3],) = (out_q_r, out_q_rd, out_q_th, out_q_thd,)
     return STATUS_OK
 
 
@@ -367,10 +373,10 @@ def max_step_entry(x, p, out):
     # slip_model.max_step
     _c0 = max_step(m, l0, k, g_s)
     step = _c0
-    (out[0],) = (step,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(step)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0],) = (step,)
     return STATUS_OK
 
 
@@ -404,10 +410,10 @@ def stance_time_limit_entry(x, p, out):
     # slip_model.stance_time_limit
     _c0 = stance_time_limit(m, l0, k_c, k_d, g_s)
     t_max = _c0
-    (out[0],) = (t_max,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(t_max)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0],) = (t_max,)
     return STATUS_OK
 
 
@@ -444,10 +450,10 @@ def bottom_quartic_entry(x, p, out):
     if _c0[1] != STATUS_OK:
         return fail(out, _c0[1])
     q_r_b = _c0[0]
-    (out[0],) = (q_r_b,)
     # every output finite, or the inputs were far outside a physical range
-    if not finite(out):
+    if not (math.isfinite(q_r_b)):
         return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0],) = (q_r_b,)
     return STATUS_OK
 
 

@@ -48,9 +48,9 @@ def fail(out, status):
 
 @njit(cache=True, error_model="numpy")
 def finite(out):
-    """Whether every entry of ``out`` is finite (one branch-free pass: v - v == 0 exactly then)."""
-    ok = True
+    """Whether every entry of ``out`` is finite (stops at the first that is not; a branch per entry,
+    always taken the same way on an OK row, costs less than a branch-free pass: benchmarks/)."""
     for j in range(out.shape[0]):
-        v = out[j]
-        ok &= v - v == 0.0
-    return ok
+        if not math.isfinite(out[j]):
+            return False
+    return True

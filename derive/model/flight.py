@@ -161,6 +161,10 @@ def flight_kernels() -> dict[str, Kernel]:
     rate, swinging = INPUTS["retraction_rate"].symbol, sym("swinging")
     at = {t: t_td}
     q_r_td = PARAMS["q_r_td"].symbol
+    # the touchdown angle's sine and cosine, set by each branch of the touchdown time (a leg held
+    # still reuses those of q_th_td: two trigonometric calls fewer on the common path)
+    sin_td, cos_td = sym("sin_td"), sym("cos_td")
+    trig = {sp.sin(angle): sin_td, sp.cos(angle): cos_td}
     # a swinging leg's touchdown time: Newton's method from a start at or after it
     newton = (
         Stage(
@@ -196,6 +200,14 @@ def flight_kernels() -> dict[str, Kernel]:
             count=sym("touchdown_passes"),
             fail_status="NOT_CONVERGED",
             comment="Newton's method on the foot's height (concave: monotone from the right)",
+        ),
+        Stage(
+            (
+                (angle, atd["angle"].subs(at)),
+                (sin_td, sp.sin(angle)),
+                (cos_td, sp.cos(angle)),
+            ),
+            comment="the leg angle at touchdown, its sine and cosine",
         ),
     )
     apex_to_td = Kernel(
@@ -244,9 +256,14 @@ def flight_kernels() -> dict[str, Kernel]:
                                     (t_far, t0),
                                     (slope, atd["slope"].subs({t: t0, rate: 0})),
                                     (sym("touchdown_passes"), sp.Integer(0)),
+                                    (angle, atd["angle"].subs(at)),
+                                    (sin_td, sp.sin(q_th_td) + rate * t0 * sp.cos(q_th_td)),
+                                    (cos_td, sp.cos(q_th_td) - rate * t0 * sp.sin(q_th_td)),
                                 ),
                                 comment="t0 with its first-order term in the rate (the rate's derivative; "
-                                "t0 itself here, as Newton's method from t0 gives bit for bit); no pass",
+                                "t0 itself here, as Newton's method from t0 gives bit for bit); no pass; "
+                                "the touchdown angle's sine and cosine likewise: those of q_th_td, with "
+                                "their derivatives",
                             ),
                         ),
                     ),
@@ -258,9 +275,8 @@ def flight_kernels() -> dict[str, Kernel]:
                 comment="the touchdown time: closed form for a leg held still, else Newton's method",
             ),
             Stage(
-                ((angle, atd["angle"].subs(at)),),
+                (),
                 (Guard(sp.Abs(angle) < sp.pi / 2, "NO_TOUCHDOWN", "the leg above the horizontal"),),
-                comment="the leg angle at touchdown",
             ),
             Stage(
                 tuple(
@@ -269,11 +285,11 @@ def flight_kernels() -> dict[str, Kernel]:
                             sym(n)
                             for n in ("touchdown_q_r", "touchdown_q_rd", "touchdown_q_th", "touchdown_q_thd")
                         ),
-                        (e.subs(at) for e in atd["state"]),
+                        (e.subs(at).subs(trig) for e in atd["state"]),
                         strict=True,
                     )
                 )
-                + ((sym("t_flight"), t_td), (sym("foot_x"), atd["foot_x"].subs(at))),
+                + ((sym("t_flight"), t_td), (sym("foot_x"), atd["foot_x"].subs(at).subs(trig))),
                 comment="touchdown state from the derived Cartesian -> polar map",
             ),
         ),
