@@ -209,9 +209,9 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    _S = carray(stack(144), (12, 12))
-    (Q0, P0, Q, P, sigma, F, ft, fq, fp, G, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5],
-        _S[6], _S[7], _S[8], _S[9], _S[10], _S[11])
+    _S = carray(stack(156), (13, 12))
+    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, G, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5],
+        _S[6], _S[7], _S[8], _S[9], _S[10], _S[11], _S[12])
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
@@ -243,7 +243,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
-        # node values of the pass: sigma, F_r (29)
+        # node values of the pass: sigma, F_r (29), sin Q
         for _j1002 in range(int(nq)):
             _Qj = Q[_j1002]
             _Pj = P[_j1002]
@@ -251,14 +251,17 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             _x0 = _D*_u**2 - _D + q_r
             _sigma = _x0
             _F = _Pj**2/(_x0**3*m) - _x0*k_c - g_s*m*math.cos(_Qj) + k_c*l0
+            _sinQ = math.sin(_Qj)
             sigma[_j1002] = _sigma
             F[_j1002] = _F
+            sinQ[_j1002] = _sinQ
         # Psi and the u-rates of (30)-(32) at the nodes
         for _j1004 in range(int(nq)):
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
             _sigma = sigma[_j1004]
+            _sinQ = sinQ[_j1004]
             _S1F = 0.0
             for _j1005 in range(int(nq)):
                 _S1F += S1[_j1004, _j1005]*F[_j1005]
@@ -268,7 +271,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             _Psi = _x1
             _ft = _x2*_x3
             _fq = _Pj*_x3/(_sigma**2*_x2)
-            _fp = _sigma*_x3*g_s*(m*math.sqrt(m))*math.sin(_Qj)
+            _fp = _sigma*_sinQ*_x3*g_s*(m*math.sqrt(m))
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -386,9 +389,9 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    _S = carray(stack(132), (11, 12))
-    (Q0, P0, Q, P, sigma, F, ft, fq, fp, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5], _S[6],
-        _S[7], _S[8], _S[9], _S[10])
+    _S = carray(stack(144), (12, 12))
+    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5],
+        _S[6], _S[7], _S[8], _S[9], _S[10], _S[11])
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)
@@ -423,7 +426,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
-        # node values of the pass: sigma, F_r (29)
+        # node values of the pass: sigma, F_r (29), sin Q
         for _j1002 in range(int(nq)):
             _Qj = Q[_j1002]
             _Pj = P[_j1002]
@@ -431,14 +434,17 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             _x0 = _D*_u**2 + q_r
             _sigma = _x0
             _F = _Pj**2/(_x0**3*m) - _x0*k_d - g_s*m*math.cos(_Qj) + k_d*l0
+            _sinQ = math.sin(_Qj)
             sigma[_j1002] = _sigma
             F[_j1002] = _F
+            sinQ[_j1002] = _sinQ
         # Psi and the u-rates of (30)-(32) at the nodes
         for _j1004 in range(int(nq)):
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
             _sigma = sigma[_j1004]
+            _sinQ = sinQ[_j1004]
             _S1F = 0.0
             for _j1005 in range(int(nq)):
                 _S1F += S1[_j1004, _j1005]*F[_j1005]
@@ -448,7 +454,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             _Psi = _x1
             _ft = _x2*_x3
             _fq = _Pj*_x3/(_sigma**2*_x2)
-            _fp = _sigma*_x3*g_s*(m*math.sqrt(m))*math.sin(_Qj)
+            _fp = _sigma*_sinQ*_x3*g_s*(m*math.sqrt(m))
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)

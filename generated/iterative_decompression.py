@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:1012e23d16987856
 #   flight.py sha256:a75b93d7de718e56
-#   iterative.py sha256:574a4ee4157d47f7
+#   iterative.py sha256:264d13490e07b704
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

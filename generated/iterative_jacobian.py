@@ -301,7 +301,7 @@ def schwind_compression_jvp6_4eaacb(_a, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 337
+    # Total ops: 340
     (q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, nodes, iterations, tol,
         d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1, d_guess_q_th__1, d_guess_q_thd__1,
         d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2, d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3,
@@ -319,22 +319,23 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
-    _S = carray(stack(1008), (84, 12))
+    _S = carray(stack(1092), (91, 12))
     (Q0, P0, d_Q0__0, d_Q0__1, d_Q0__2, d_Q0__3, d_Q0__4, d_Q0__5, d_P0__0, d_P0__1, d_P0__2, d_P0__3,
         d_P0__4, d_P0__5, Q, P, d_Q__0, d_Q__1, d_Q__2, d_Q__3, d_Q__4, d_Q__5, d_P__0, d_P__1, d_P__2,
-        d_P__3, d_P__4, d_P__5, sigma, F, d_sigma__0, d_sigma__1, d_sigma__2, d_sigma__3, d_sigma__4,
-        d_sigma__5, d_F__0, d_F__1, d_F__2, d_F__3, d_F__4, d_F__5, ft, fq, fp, d_ft__0, d_ft__1, d_ft__2,
-        d_ft__3, d_ft__4, d_ft__5, d_fq__0, d_fq__1, d_fq__2, d_fq__3, d_fq__4, d_fq__5, d_fp__0, d_fp__1,
-        d_fp__2, d_fp__3, d_fp__4, d_fp__5, G, d_G__0, d_G__1, d_G__2, d_G__3, d_G__4, d_G__5, Q_next, P_next,
-        d_Q_next__0, d_Q_next__1, d_Q_next__2, d_Q_next__3, d_Q_next__4, d_Q_next__5, d_P_next__0,
-        d_P_next__1, d_P_next__2, d_P_next__3, d_P_next__4, d_P_next__5) = (_S[0], _S[1], _S[2], _S[3], _S[4],
-        _S[5], _S[6], _S[7], _S[8], _S[9], _S[10], _S[11], _S[12], _S[13], _S[14], _S[15], _S[16], _S[17],
-        _S[18], _S[19], _S[20], _S[21], _S[22], _S[23], _S[24], _S[25], _S[26], _S[27], _S[28], _S[29],
-        _S[30], _S[31], _S[32], _S[33], _S[34], _S[35], _S[36], _S[37], _S[38], _S[39], _S[40], _S[41],
-        _S[42], _S[43], _S[44], _S[45], _S[46], _S[47], _S[48], _S[49], _S[50], _S[51], _S[52], _S[53],
-        _S[54], _S[55], _S[56], _S[57], _S[58], _S[59], _S[60], _S[61], _S[62], _S[63], _S[64], _S[65],
-        _S[66], _S[67], _S[68], _S[69], _S[70], _S[71], _S[72], _S[73], _S[74], _S[75], _S[76], _S[77],
-        _S[78], _S[79], _S[80], _S[81], _S[82], _S[83])
+        d_P__3, d_P__4, d_P__5, sigma, F, sinQ, d_sigma__0, d_sigma__1, d_sigma__2, d_sigma__3, d_sigma__4,
+        d_sigma__5, d_F__0, d_F__1, d_F__2, d_F__3, d_F__4, d_F__5, d_sinQ__0, d_sinQ__1, d_sinQ__2,
+        d_sinQ__3, d_sinQ__4, d_sinQ__5, ft, fq, fp, d_ft__0, d_ft__1, d_ft__2, d_ft__3, d_ft__4, d_ft__5,
+        d_fq__0, d_fq__1, d_fq__2, d_fq__3, d_fq__4, d_fq__5, d_fp__0, d_fp__1, d_fp__2, d_fp__3, d_fp__4,
+        d_fp__5, G, d_G__0, d_G__1, d_G__2, d_G__3, d_G__4, d_G__5, Q_next, P_next, d_Q_next__0, d_Q_next__1,
+        d_Q_next__2, d_Q_next__3, d_Q_next__4, d_Q_next__5, d_P_next__0, d_P_next__1, d_P_next__2,
+        d_P_next__3, d_P_next__4, d_P_next__5) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5], _S[6], _S[7],
+        _S[8], _S[9], _S[10], _S[11], _S[12], _S[13], _S[14], _S[15], _S[16], _S[17], _S[18], _S[19], _S[20],
+        _S[21], _S[22], _S[23], _S[24], _S[25], _S[26], _S[27], _S[28], _S[29], _S[30], _S[31], _S[32],
+        _S[33], _S[34], _S[35], _S[36], _S[37], _S[38], _S[39], _S[40], _S[41], _S[42], _S[43], _S[44],
+        _S[45], _S[46], _S[47], _S[48], _S[49], _S[50], _S[51], _S[52], _S[53], _S[54], _S[55], _S[56],
+        _S[57], _S[58], _S[59], _S[60], _S[61], _S[62], _S[63], _S[64], _S[65], _S[66], _S[67], _S[68],
+        _S[69], _S[70], _S[71], _S[72], _S[73], _S[74], _S[75], _S[76], _S[77], _S[78], _S[79], _S[80],
+        _S[81], _S[82], _S[83], _S[84], _S[85], _S[86], _S[87], _S[88], _S[89], _S[90])
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
@@ -399,7 +400,7 @@ def schwind_compression_jvp6_4eaacb(_a, out):
         (_D, _d_D__0, _d_D__1, _d_D__2, _d_D__3, _d_D__4, _d_D__5, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return fail(out, STATUS_NOT_CONVERGED)
-        # node values of the pass: sigma, F_r (29)
+        # node values of the pass: sigma, F_r (29), sin Q
         for _j1002 in range(int(nq)):
             _Qj = Q[_j1002]
             _Pj = P[_j1002]
@@ -427,23 +428,34 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             _d_sigma__3 = _d_D__3*_pd__0
             _d_sigma__4 = _d_D__4*_pd__0
             _d_sigma__5 = _d_D__5*_pd__0
-            _x3 = g_s*m
-            _x4 = _Pj**2
-            _x5 = (1.0/m)
-            _x7 = (1.0/_x2)
-            _x6 = _x5*_x7**3
-            _F = -_x2*k_c - _x3*math.cos(_Qj) + _x4*_x6 + k_c*l0
-            _pd__1 = 2.0*_Pj*_x6
-            _pd__2 = _x3*math.sin(_Qj)
-            _pd__3 = -3.0*_x4*_x5*_x7**4 - k_c
+            _x3 = math.cos(_Qj)
+            _x4 = g_s*m
+            _x5 = _Pj**2
+            _x6 = (1.0/m)
+            _x9 = (1.0/_x2)
+            _x7 = _x6*_x9**3
+            _F = -_x2*k_c - _x3*_x4 + _x5*_x7 + k_c*l0
+            _pd__1 = 2.0*_Pj*_x7
+            _x8 = math.sin(_Qj)
+            _pd__2 = _x4*_x8
+            _pd__3 = -3.0*_x5*_x6*_x9**4 - k_c
             _d_F__0 = _d_Pj__0*_pd__1 + _d_Qj__0*_pd__2 + _d_sigma__0*_pd__3
             _d_F__1 = _d_Pj__1*_pd__1 + _d_Qj__1*_pd__2 + _d_sigma__1*_pd__3
             _d_F__2 = _d_Pj__2*_pd__1 + _d_Qj__2*_pd__2 + _d_sigma__2*_pd__3
             _d_F__3 = _d_Pj__3*_pd__1 + _d_Qj__3*_pd__2 + _d_sigma__3*_pd__3
             _d_F__4 = _D + _d_Pj__4*_pd__1 + _d_Qj__4*_pd__2 + _d_sigma__4*_pd__3 - _x1 + l0 - q_r
             _d_F__5 = _d_Pj__5*_pd__1 + _d_Qj__5*_pd__2 + _d_sigma__5*_pd__3
+            _sinQ = _x8
+            _pd__4 = _x3
+            _d_sinQ__0 = _d_Qj__0*_pd__4
+            _d_sinQ__1 = _d_Qj__1*_pd__4
+            _d_sinQ__2 = _d_Qj__2*_pd__4
+            _d_sinQ__3 = _d_Qj__3*_pd__4
+            _d_sinQ__4 = _d_Qj__4*_pd__4
+            _d_sinQ__5 = _d_Qj__5*_pd__4
             sigma[_j1002] = _sigma
             F[_j1002] = _F
+            sinQ[_j1002] = _sinQ
             d_sigma__0[_j1002] = _d_sigma__0
             d_sigma__1[_j1002] = _d_sigma__1
             d_sigma__2[_j1002] = _d_sigma__2
@@ -456,18 +468,18 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             d_F__3[_j1002] = _d_F__3
             d_F__4[_j1002] = _d_F__4
             d_F__5[_j1002] = _d_F__5
+            d_sinQ__0[_j1002] = _d_sinQ__0
+            d_sinQ__1[_j1002] = _d_sinQ__1
+            d_sinQ__2[_j1002] = _d_sinQ__2
+            d_sinQ__3[_j1002] = _d_sinQ__3
+            d_sinQ__4[_j1002] = _d_sinQ__4
+            d_sinQ__5[_j1002] = _d_sinQ__5
         # Psi and the u-rates of (30)-(32) at the nodes
         for _j1004 in range(int(nq)):
-            _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
             _sigma = sigma[_j1004]
-            _d_Qj__0 = d_Q__0[_j1004]
-            _d_Qj__1 = d_Q__1[_j1004]
-            _d_Qj__2 = d_Q__2[_j1004]
-            _d_Qj__3 = d_Q__3[_j1004]
-            _d_Qj__4 = d_Q__4[_j1004]
-            _d_Qj__5 = d_Q__5[_j1004]
+            _sinQ = sinQ[_j1004]
             _d_Pj__0 = d_P__0[_j1004]
             _d_Pj__1 = d_P__1[_j1004]
             _d_Pj__2 = d_P__2[_j1004]
@@ -480,6 +492,12 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             _d_sigma__3 = d_sigma__3[_j1004]
             _d_sigma__4 = d_sigma__4[_j1004]
             _d_sigma__5 = d_sigma__5[_j1004]
+            _d_sinQ__0 = d_sinQ__0[_j1004]
+            _d_sinQ__1 = d_sinQ__1[_j1004]
+            _d_sinQ__2 = d_sinQ__2[_j1004]
+            _d_sinQ__3 = d_sinQ__3[_j1004]
+            _d_sinQ__4 = d_sinQ__4[_j1004]
+            _d_sinQ__5 = d_sinQ__5[_j1004]
             _S1F = 0.0
             _d_S1F__0 = 0.0
             _d_S1F__1 = 0.0
@@ -495,65 +513,64 @@ def schwind_compression_jvp6_4eaacb(_a, out):
                 _d_S1F__3 += S1[_j1004, _j1005]*d_F__3[_j1005]
                 _d_S1F__4 += S1[_j1004, _j1005]*d_F__4[_j1005]
                 _d_S1F__5 += S1[_j1004, _j1005]*d_F__5[_j1005]
-            _x8 = _u**-2
-            _x9 = _S1F*_x8
-            _Psi = _x9
-            _pd__4 = _x8
-            _d_Psi__0 = _d_S1F__0*_pd__4
-            _d_Psi__1 = _d_S1F__1*_pd__4
-            _d_Psi__2 = _d_S1F__2*_pd__4
-            _d_Psi__3 = _d_S1F__3*_pd__4
-            _d_Psi__4 = _d_S1F__4*_pd__4
-            _d_Psi__5 = _d_S1F__5*_pd__4
-            _x10 = math.sqrt(_D)
-            _x11 = math.sqrt(m)
-            _x12 = (1.0/math.sqrt(_x9))
-            _x13 = _x11*_x12
-            _ft = _x10*_x13
-            _x14 = (0.5)/_x10
-            _pd__5 = _x13*_x14
-            _x15 = (0.5)*_x10/(_x9*math.sqrt(_x9))
-            _pd__6 = -_x11*_x15
-            _d_ft__0 = _d_D__0*_pd__5 + _d_Psi__0*_pd__6
-            _d_ft__1 = _d_D__1*_pd__5 + _d_Psi__1*_pd__6
-            _d_ft__2 = _d_D__2*_pd__5 + _d_Psi__2*_pd__6
-            _d_ft__3 = _d_D__3*_pd__5 + _d_Psi__3*_pd__6
-            _d_ft__4 = _d_D__4*_pd__5 + _d_Psi__4*_pd__6
-            _d_ft__5 = _d_D__5*_pd__5 + _d_Psi__5*_pd__6
-            _x16 = _x10*_x12
-            _x17 = (1.0/_x11)
-            _x27 = (1.0/_sigma)
-            _x18 = _x17*_x27**2
-            _x19 = _x16*_x18
-            _fq = _Pj*_x19
-            _x20 = _Pj*_x18
-            _x21 = _x12*_x14
-            _pd__7 = _x20*_x21
-            _pd__8 = _x19
-            _pd__9 = -_x15*_x20
-            _pd__10 = -2.0*_Pj*_x16*_x17*_x27**3
-            _d_fq__0 = _d_D__0*_pd__7 + _d_Pj__0*_pd__8 + _d_Psi__0*_pd__9 + _d_sigma__0*_pd__10
-            _d_fq__1 = _d_D__1*_pd__7 + _d_Pj__1*_pd__8 + _d_Psi__1*_pd__9 + _d_sigma__1*_pd__10
-            _d_fq__2 = _d_D__2*_pd__7 + _d_Pj__2*_pd__8 + _d_Psi__2*_pd__9 + _d_sigma__2*_pd__10
-            _d_fq__3 = _d_D__3*_pd__7 + _d_Pj__3*_pd__8 + _d_Psi__3*_pd__9 + _d_sigma__3*_pd__10
-            _d_fq__4 = _d_D__4*_pd__7 + _d_Pj__4*_pd__8 + _d_Psi__4*_pd__9 + _d_sigma__4*_pd__10
-            _d_fq__5 = _d_D__5*_pd__7 + _d_Pj__5*_pd__8 + _d_Psi__5*_pd__9 + _d_sigma__5*_pd__10
-            _x22 = math.sin(_Qj)
-            _x23 = (m*math.sqrt(m))
-            _x24 = _x16*_x23*g_s
-            _x25 = _x22*_x24
-            _fp = _sigma*_x25
-            _x26 = _sigma*_x22*_x23*g_s
-            _pd__11 = _x21*_x26
-            _pd__12 = -_x15*_x26
-            _pd__13 = _sigma*_x24*math.cos(_Qj)
-            _pd__14 = _x25
-            _d_fp__0 = _d_D__0*_pd__11 + _d_Psi__0*_pd__12 + _d_Qj__0*_pd__13 + _d_sigma__0*_pd__14
-            _d_fp__1 = _d_D__1*_pd__11 + _d_Psi__1*_pd__12 + _d_Qj__1*_pd__13 + _d_sigma__1*_pd__14
-            _d_fp__2 = _d_D__2*_pd__11 + _d_Psi__2*_pd__12 + _d_Qj__2*_pd__13 + _d_sigma__2*_pd__14
-            _d_fp__3 = _d_D__3*_pd__11 + _d_Psi__3*_pd__12 + _d_Qj__3*_pd__13 + _d_sigma__3*_pd__14
-            _d_fp__4 = _d_D__4*_pd__11 + _d_Psi__4*_pd__12 + _d_Qj__4*_pd__13 + _d_sigma__4*_pd__14
-            _d_fp__5 = _d_D__5*_pd__11 + _d_Psi__5*_pd__12 + _d_Qj__5*_pd__13 + _d_sigma__5*_pd__14
+            _x10 = _u**-2
+            _x11 = _S1F*_x10
+            _Psi = _x11
+            _pd__5 = _x10
+            _d_Psi__0 = _d_S1F__0*_pd__5
+            _d_Psi__1 = _d_S1F__1*_pd__5
+            _d_Psi__2 = _d_S1F__2*_pd__5
+            _d_Psi__3 = _d_S1F__3*_pd__5
+            _d_Psi__4 = _d_S1F__4*_pd__5
+            _d_Psi__5 = _d_S1F__5*_pd__5
+            _x12 = math.sqrt(_D)
+            _x13 = math.sqrt(m)
+            _x14 = (1.0/math.sqrt(_x11))
+            _x15 = _x13*_x14
+            _ft = _x12*_x15
+            _x16 = (0.5)/_x12
+            _pd__6 = _x15*_x16
+            _x17 = (0.5)*_x12/(_x11*math.sqrt(_x11))
+            _pd__7 = -_x13*_x17
+            _d_ft__0 = _d_D__0*_pd__6 + _d_Psi__0*_pd__7
+            _d_ft__1 = _d_D__1*_pd__6 + _d_Psi__1*_pd__7
+            _d_ft__2 = _d_D__2*_pd__6 + _d_Psi__2*_pd__7
+            _d_ft__3 = _d_D__3*_pd__6 + _d_Psi__3*_pd__7
+            _d_ft__4 = _d_D__4*_pd__6 + _d_Psi__4*_pd__7
+            _d_ft__5 = _d_D__5*_pd__6 + _d_Psi__5*_pd__7
+            _x18 = _x12*_x14
+            _x19 = (1.0/_x13)
+            _x28 = (1.0/_sigma)
+            _x20 = _x19*_x28**2
+            _x21 = _x18*_x20
+            _fq = _Pj*_x21
+            _x22 = _Pj*_x20
+            _x23 = _x14*_x16
+            _pd__8 = _x22*_x23
+            _pd__9 = _x21
+            _pd__10 = -_x17*_x22
+            _pd__11 = -2.0*_Pj*_x18*_x19*_x28**3
+            _d_fq__0 = _d_D__0*_pd__8 + _d_Pj__0*_pd__9 + _d_Psi__0*_pd__10 + _d_sigma__0*_pd__11
+            _d_fq__1 = _d_D__1*_pd__8 + _d_Pj__1*_pd__9 + _d_Psi__1*_pd__10 + _d_sigma__1*_pd__11
+            _d_fq__2 = _d_D__2*_pd__8 + _d_Pj__2*_pd__9 + _d_Psi__2*_pd__10 + _d_sigma__2*_pd__11
+            _d_fq__3 = _d_D__3*_pd__8 + _d_Pj__3*_pd__9 + _d_Psi__3*_pd__10 + _d_sigma__3*_pd__11
+            _d_fq__4 = _d_D__4*_pd__8 + _d_Pj__4*_pd__9 + _d_Psi__4*_pd__10 + _d_sigma__4*_pd__11
+            _d_fq__5 = _d_D__5*_pd__8 + _d_Pj__5*_pd__9 + _d_Psi__5*_pd__10 + _d_sigma__5*_pd__11
+            _x24 = (m*math.sqrt(m))
+            _x25 = _x18*_x24*g_s
+            _x26 = _sinQ*_x25
+            _fp = _sigma*_x26
+            _x27 = _sigma*_sinQ*_x24*g_s
+            _pd__12 = _x23*_x27
+            _pd__13 = -_x17*_x27
+            _pd__14 = _x26
+            _pd__15 = _sigma*_x25
+            _d_fp__0 = _d_D__0*_pd__12 + _d_Psi__0*_pd__13 + _d_sigma__0*_pd__14 + _d_sinQ__0*_pd__15
+            _d_fp__1 = _d_D__1*_pd__12 + _d_Psi__1*_pd__13 + _d_sigma__1*_pd__14 + _d_sinQ__1*_pd__15
+            _d_fp__2 = _d_D__2*_pd__12 + _d_Psi__2*_pd__13 + _d_sigma__2*_pd__14 + _d_sinQ__2*_pd__15
+            _d_fp__3 = _d_D__3*_pd__12 + _d_Psi__3*_pd__13 + _d_sigma__3*_pd__14 + _d_sinQ__3*_pd__15
+            _d_fp__4 = _d_D__4*_pd__12 + _d_Psi__4*_pd__13 + _d_sigma__4*_pd__14 + _d_sinQ__4*_pd__15
+            _d_fp__5 = _d_D__5*_pd__12 + _d_Psi__5*_pd__13 + _d_sigma__5*_pd__14 + _d_sinQ__5*_pd__15
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return fail(out, STATUS_IMAGINARY_MOMENTUM)
@@ -693,25 +710,25 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             d_P_next__4[_j1029] = -_d_Sfp__4 + _d_wfp__4
             d_P_next__5[_j1029] = -_d_Sfp__5 + _d_wfp__5
         # D = q_r_td - q_r_b from the radial work
-        _x28 = m*q_rd**2
-        _x29 = l0 - q_r
-        _x30 = _x29*k_c
-        _x31 = 2.0*_rbar + _x30
-        _x32 = math.sqrt(_x28*k_c + _x31**2)
-        _x33 = _x31 + _x32
-        _x34 = (1.0/_x33)
-        _D_next = _x28*_x34
-        _x35 = (1.0/_x32)
-        _x36 = _x34**2
-        _x37 = _x28*_x36
-        _pd__15 = _x37*(-_x35*(4.0*_rbar + 2.0*_x30) - 2.0)
-        _x38 = _x35*k_c
-        _d_D_next__0 = _d_rbar__0*_pd__15 + _x37*(_x31*_x38 + k_c)
-        _d_D_next__1 = _d_rbar__1*_pd__15 + 2.0*_x34*m*q_rd - _x36*_x38*m**2*q_rd**3
-        _d_D_next__2 = _d_rbar__2*_pd__15
-        _d_D_next__3 = _d_rbar__3*_pd__15
-        _d_D_next__4 = _d_rbar__4*_pd__15 + _x37*(-_x29 - _x35*((0.5)*_x28 + (0.5)*_x31*(2.0*l0 - 2.0*q_r)))
-        _d_D_next__5 = _d_rbar__5*_pd__15
+        _x29 = m*q_rd**2
+        _x30 = l0 - q_r
+        _x31 = _x30*k_c
+        _x32 = 2.0*_rbar + _x31
+        _x33 = math.sqrt(_x29*k_c + _x32**2)
+        _x34 = _x32 + _x33
+        _x35 = (1.0/_x34)
+        _D_next = _x29*_x35
+        _x36 = (1.0/_x33)
+        _x37 = _x35**2
+        _x38 = _x29*_x37
+        _pd__16 = _x38*(-_x36*(4.0*_rbar + 2.0*_x31) - 2.0)
+        _x39 = _x36*k_c
+        _d_D_next__0 = _d_rbar__0*_pd__16 + _x38*(_x32*_x39 + k_c)
+        _d_D_next__1 = _d_rbar__1*_pd__16 + 2.0*_x35*m*q_rd - _x37*_x39*m**2*q_rd**3
+        _d_D_next__2 = _d_rbar__2*_pd__16
+        _d_D_next__3 = _d_rbar__3*_pd__16
+        _d_D_next__4 = _d_rbar__4*_pd__16 + _x38*(-_x30 - _x36*((0.5)*_x29 + (0.5)*_x32*(2.0*l0 - 2.0*q_r)))
+        _d_D_next__5 = _d_rbar__5*_pd__16
         # next values
         _D__next = _D_next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
@@ -786,24 +803,24 @@ def schwind_compression_jvp6_4eaacb(_a, out):
     t_half = _t_end
     end_q_th = _q_end + q_th
     d_end_q_th__2 = _d_q_end__2 + 1.0
-    _x39 = -_D + q_r
-    end_q_r = _x39
+    _x40 = -_D + q_r
+    end_q_r = _x40
     d_end_q_r__0 = 1.0 - _d_D__0
-    _x40 = q_r**2
-    _x41 = _p_end + _x40*m*q_thd
-    _x42 = (1.0/m)
-    _x45 = (1.0/_x39)
-    _x43 = _x45**2
-    _x44 = _x42*_x43
-    end_q_thd = _x41*_x44
-    _pd__16 = _x44
-    _pd__17 = -2.0*_x41*_x42*_x45**3
-    d_end_q_thd__0 = _d_p_end__0*_pd__16 + _pd__17*d_end_q_r__0 + 2.0*_x43*q_r*q_thd
-    d_end_q_thd__1 = -_d_D__1*_pd__17 + _d_p_end__1*_pd__16
-    d_end_q_thd__2 = -_d_D__2*_pd__17 + _d_p_end__2*_pd__16
-    d_end_q_thd__3 = -_d_D__3*_pd__17 + _d_p_end__3*_pd__16 + _x40*_x43
-    d_end_q_thd__4 = -_d_D__4*_pd__17 + _d_p_end__4*_pd__16
-    d_end_q_thd__5 = -_d_D__5*_pd__17 + _d_p_end__5*_pd__16
+    _x41 = q_r**2
+    _x42 = _p_end + _x41*m*q_thd
+    _x43 = (1.0/m)
+    _x46 = (1.0/_x40)
+    _x44 = _x46**2
+    _x45 = _x43*_x44
+    end_q_thd = _x42*_x45
+    _pd__17 = _x45
+    _pd__18 = -2.0*_x42*_x43*_x46**3
+    d_end_q_thd__0 = _d_p_end__0*_pd__17 + _pd__18*d_end_q_r__0 + 2.0*_x44*q_r*q_thd
+    d_end_q_thd__1 = -_d_D__1*_pd__18 + _d_p_end__1*_pd__17
+    d_end_q_thd__2 = -_d_D__2*_pd__18 + _d_p_end__2*_pd__17
+    d_end_q_thd__3 = -_d_D__3*_pd__18 + _d_p_end__3*_pd__17 + _x41*_x44
+    d_end_q_thd__4 = -_d_D__4*_pd__18 + _d_p_end__4*_pd__17
+    d_end_q_thd__5 = -_d_D__5*_pd__18 + _d_p_end__5*_pd__17
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
@@ -879,7 +896,7 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 279
+    # Total ops: 282
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
             and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
@@ -891,13 +908,14 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
             and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
-    _S = carray(stack(924), (77, 12))
+    _S = carray(stack(1008), (84, 12))
     (Q0, P0, d_Q0__q_th, d_Q0__guess_q_th, d_P0__q_r, d_P0__q_thd, d_P0__guess_q_thd, d_Q0__q_r, d_Q0__q_thd,
         d_Q0__k_d, d_Q0__guess_q_thd, d_P0__q_th, d_P0__k_d, d_P0__guess_q_th, Q, P, d_Q__q_r, d_Q__q_th,
         d_Q__q_thd, d_Q__k_d, d_Q__guess_q_th, d_Q__guess_q_thd, d_P__q_r, d_P__q_th, d_P__q_thd, d_P__k_d,
-        d_P__guess_q_th, d_P__guess_q_thd, sigma, F, d_sigma__q_r, d_sigma__q_th, d_sigma__q_thd,
+        d_P__guess_q_th, d_P__guess_q_thd, sigma, F, sinQ, d_sigma__q_r, d_sigma__q_th, d_sigma__q_thd,
         d_sigma__k_d, d_sigma__guess_q_th, d_sigma__guess_q_thd, d_F__q_r, d_F__q_th, d_F__q_thd, d_F__k_d,
-        d_F__guess_q_th, d_F__guess_q_thd, ft, fq, fp, d_ft__q_r, d_ft__q_th, d_ft__q_thd, d_ft__k_d,
+        d_F__guess_q_th, d_F__guess_q_thd, d_sinQ__q_r, d_sinQ__q_th, d_sinQ__q_thd, d_sinQ__k_d,
+        d_sinQ__guess_q_th, d_sinQ__guess_q_thd, ft, fq, fp, d_ft__q_r, d_ft__q_th, d_ft__q_thd, d_ft__k_d,
         d_ft__guess_q_th, d_ft__guess_q_thd, d_fq__q_r, d_fq__q_th, d_fq__q_thd, d_fq__k_d, d_fq__guess_q_th,
         d_fq__guess_q_thd, d_fp__q_r, d_fp__q_th, d_fp__q_thd, d_fp__k_d, d_fp__guess_q_th, d_fp__guess_q_thd,
         Q_next, P_next, d_Q_next__q_r, d_Q_next__q_th, d_Q_next__q_thd, d_Q_next__k_d, d_Q_next__guess_q_th,
@@ -908,7 +926,8 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
         _S[32], _S[33], _S[34], _S[35], _S[36], _S[37], _S[38], _S[39], _S[40], _S[41], _S[42], _S[43],
         _S[44], _S[45], _S[46], _S[47], _S[48], _S[49], _S[50], _S[51], _S[52], _S[53], _S[54], _S[55],
         _S[56], _S[57], _S[58], _S[59], _S[60], _S[61], _S[62], _S[63], _S[64], _S[65], _S[66], _S[67],
-        _S[68], _S[69], _S[70], _S[71], _S[72], _S[73], _S[74], _S[75], _S[76])
+        _S[68], _S[69], _S[70], _S[71], _S[72], _S[73], _S[74], _S[75], _S[76], _S[77], _S[78], _S[79],
+        _S[80], _S[81], _S[82], _S[83])
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)
@@ -983,7 +1002,7 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
         (_D, _d_D__q_r, _d_D__q_th, _d_D__q_thd, _d_D__k_d, _d_D__guess_q_th, _d_D__guess_q_thd, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return fail(out, STATUS_NOT_CONVERGED)
-        # node values of the pass: sigma, F_r (29)
+        # node values of the pass: sigma, F_r (29), sin Q
         for _j1016 in range(int(nq)):
             _Qj = Q[_j1016]
             _Pj = P[_j1016]
@@ -1011,15 +1030,17 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
             _d_sigma__k_d = _d_D__k_d*_pd__0
             _d_sigma__guess_q_th = _d_D__guess_q_th*_pd__0
             _d_sigma__guess_q_thd = _d_D__guess_q_thd*_pd__0
-            _x3 = g_s*m
-            _x4 = _Pj**2
-            _x5 = (1.0/m)
-            _x7 = (1.0/_x2)
-            _x6 = _x5*_x7**3
-            _F = -_x2*k_d - _x3*math.cos(_Qj) + _x4*_x6 + k_d*l0
-            _pd__1 = 2.0*_Pj*_x6
-            _pd__2 = _x3*math.sin(_Qj)
-            _pd__3 = -3.0*_x4*_x5*_x7**4 - k_d
+            _x3 = math.cos(_Qj)
+            _x4 = g_s*m
+            _x5 = _Pj**2
+            _x6 = (1.0/m)
+            _x9 = (1.0/_x2)
+            _x7 = _x6*_x9**3
+            _F = -_x2*k_d - _x3*_x4 + _x5*_x7 + k_d*l0
+            _pd__1 = 2.0*_Pj*_x7
+            _x8 = math.sin(_Qj)
+            _pd__2 = _x4*_x8
+            _pd__3 = -3.0*_x5*_x6*_x9**4 - k_d
             _d_F__q_r = _d_Pj__q_r*_pd__1 + _d_Qj__q_r*_pd__2 + _d_sigma__q_r*_pd__3
             _d_F__q_th = _d_Pj__q_th*_pd__1 + _d_Qj__q_th*_pd__2 + _d_sigma__q_th*_pd__3
             _d_F__q_thd = _d_Pj__q_thd*_pd__1 + _d_Qj__q_thd*_pd__2 + _d_sigma__q_thd*_pd__3
@@ -1028,8 +1049,17 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
                 + _d_sigma__guess_q_th*_pd__3)
             _d_F__guess_q_thd = (_d_Pj__guess_q_thd*_pd__1 + _d_Qj__guess_q_thd*_pd__2
                 + _d_sigma__guess_q_thd*_pd__3)
+            _sinQ = _x8
+            _pd__4 = _x3
+            _d_sinQ__q_r = _d_Qj__q_r*_pd__4
+            _d_sinQ__q_th = _d_Qj__q_th*_pd__4
+            _d_sinQ__q_thd = _d_Qj__q_thd*_pd__4
+            _d_sinQ__k_d = _d_Qj__k_d*_pd__4
+            _d_sinQ__guess_q_th = _d_Qj__guess_q_th*_pd__4
+            _d_sinQ__guess_q_thd = _d_Qj__guess_q_thd*_pd__4
             sigma[_j1016] = _sigma
             F[_j1016] = _F
+            sinQ[_j1016] = _sinQ
             d_sigma__q_r[_j1016] = _d_sigma__q_r
             d_sigma__q_th[_j1016] = _d_sigma__q_th
             d_sigma__q_thd[_j1016] = _d_sigma__q_thd
@@ -1042,18 +1072,18 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
             d_F__k_d[_j1016] = _d_F__k_d
             d_F__guess_q_th[_j1016] = _d_F__guess_q_th
             d_F__guess_q_thd[_j1016] = _d_F__guess_q_thd
+            d_sinQ__q_r[_j1016] = _d_sinQ__q_r
+            d_sinQ__q_th[_j1016] = _d_sinQ__q_th
+            d_sinQ__q_thd[_j1016] = _d_sinQ__q_thd
+            d_sinQ__k_d[_j1016] = _d_sinQ__k_d
+            d_sinQ__guess_q_th[_j1016] = _d_sinQ__guess_q_th
+            d_sinQ__guess_q_thd[_j1016] = _d_sinQ__guess_q_thd
         # Psi and the u-rates of (30)-(32) at the nodes
         for _j1018 in range(int(nq)):
-            _Qj = Q[_j1018]
             _Pj = P[_j1018]
             _u = u[_j1018]
             _sigma = sigma[_j1018]
-            _d_Qj__q_r = d_Q__q_r[_j1018]
-            _d_Qj__q_th = d_Q__q_th[_j1018]
-            _d_Qj__q_thd = d_Q__q_thd[_j1018]
-            _d_Qj__k_d = d_Q__k_d[_j1018]
-            _d_Qj__guess_q_th = d_Q__guess_q_th[_j1018]
-            _d_Qj__guess_q_thd = d_Q__guess_q_thd[_j1018]
+            _sinQ = sinQ[_j1018]
             _d_Pj__q_r = d_P__q_r[_j1018]
             _d_Pj__q_th = d_P__q_th[_j1018]
             _d_Pj__q_thd = d_P__q_thd[_j1018]
@@ -1066,6 +1096,12 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
             _d_sigma__k_d = d_sigma__k_d[_j1018]
             _d_sigma__guess_q_th = d_sigma__guess_q_th[_j1018]
             _d_sigma__guess_q_thd = d_sigma__guess_q_thd[_j1018]
+            _d_sinQ__q_r = d_sinQ__q_r[_j1018]
+            _d_sinQ__q_th = d_sinQ__q_th[_j1018]
+            _d_sinQ__q_thd = d_sinQ__q_thd[_j1018]
+            _d_sinQ__k_d = d_sinQ__k_d[_j1018]
+            _d_sinQ__guess_q_th = d_sinQ__guess_q_th[_j1018]
+            _d_sinQ__guess_q_thd = d_sinQ__guess_q_thd[_j1018]
             _S1F = 0.0
             _d_S1F__q_r = 0.0
             _d_S1F__q_th = 0.0
@@ -1081,73 +1117,74 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
                 _d_S1F__k_d += S1[_j1018, _j1019]*d_F__k_d[_j1019]
                 _d_S1F__guess_q_th += S1[_j1018, _j1019]*d_F__guess_q_th[_j1019]
                 _d_S1F__guess_q_thd += S1[_j1018, _j1019]*d_F__guess_q_thd[_j1019]
-            _x8 = _u**-2
-            _x9 = _S1F*_x8
-            _Psi = _x9
-            _pd__4 = _x8
-            _d_Psi__q_r = _d_S1F__q_r*_pd__4
-            _d_Psi__q_th = _d_S1F__q_th*_pd__4
-            _d_Psi__q_thd = _d_S1F__q_thd*_pd__4
-            _d_Psi__k_d = _d_S1F__k_d*_pd__4
-            _d_Psi__guess_q_th = _d_S1F__guess_q_th*_pd__4
-            _d_Psi__guess_q_thd = _d_S1F__guess_q_thd*_pd__4
-            _x10 = math.sqrt(_D)
-            _x11 = math.sqrt(m)
-            _x12 = (1.0/math.sqrt(_x9))
-            _x13 = _x11*_x12
-            _ft = _x10*_x13
-            _x14 = (0.5)/_x10
-            _pd__5 = _x13*_x14
-            _x15 = (0.5)*_x10/(_x9*math.sqrt(_x9))
-            _pd__6 = -_x11*_x15
-            _d_ft__q_r = _d_D__q_r*_pd__5 + _d_Psi__q_r*_pd__6
-            _d_ft__q_th = _d_D__q_th*_pd__5 + _d_Psi__q_th*_pd__6
-            _d_ft__q_thd = _d_D__q_thd*_pd__5 + _d_Psi__q_thd*_pd__6
-            _d_ft__k_d = _d_D__k_d*_pd__5 + _d_Psi__k_d*_pd__6
-            _d_ft__guess_q_th = _d_D__guess_q_th*_pd__5 + _d_Psi__guess_q_th*_pd__6
-            _d_ft__guess_q_thd = _d_D__guess_q_thd*_pd__5 + _d_Psi__guess_q_thd*_pd__6
-            _x16 = _x10*_x12
-            _x17 = (1.0/_x11)
-            _x27 = (1.0/_sigma)
-            _x18 = _x17*_x27**2
-            _x19 = _x16*_x18
-            _fq = _Pj*_x19
-            _x20 = _Pj*_x18
-            _x21 = _x12*_x14
-            _pd__7 = _x20*_x21
-            _pd__8 = _x19
-            _pd__9 = -_x15*_x20
-            _pd__10 = -2.0*_Pj*_x16*_x17*_x27**3
-            _d_fq__q_r = _d_D__q_r*_pd__7 + _d_Pj__q_r*_pd__8 + _d_Psi__q_r*_pd__9 + _d_sigma__q_r*_pd__10
-            _d_fq__q_th = (_d_D__q_th*_pd__7 + _d_Pj__q_th*_pd__8 + _d_Psi__q_th*_pd__9
-                + _d_sigma__q_th*_pd__10)
-            _d_fq__q_thd = (_d_D__q_thd*_pd__7 + _d_Pj__q_thd*_pd__8 + _d_Psi__q_thd*_pd__9
-                + _d_sigma__q_thd*_pd__10)
-            _d_fq__k_d = _d_D__k_d*_pd__7 + _d_Pj__k_d*_pd__8 + _d_Psi__k_d*_pd__9 + _d_sigma__k_d*_pd__10
-            _d_fq__guess_q_th = (_d_D__guess_q_th*_pd__7 + _d_Pj__guess_q_th*_pd__8
-                + _d_Psi__guess_q_th*_pd__9 + _d_sigma__guess_q_th*_pd__10)
-            _d_fq__guess_q_thd = (_d_D__guess_q_thd*_pd__7 + _d_Pj__guess_q_thd*_pd__8
-                + _d_Psi__guess_q_thd*_pd__9 + _d_sigma__guess_q_thd*_pd__10)
-            _x22 = math.sin(_Qj)
-            _x23 = (m*math.sqrt(m))
-            _x24 = _x16*_x23*g_s
-            _x25 = _x22*_x24
-            _fp = _sigma*_x25
-            _x26 = _sigma*_x22*_x23*g_s
-            _pd__11 = _x21*_x26
-            _pd__12 = -_x15*_x26
-            _pd__13 = _sigma*_x24*math.cos(_Qj)
-            _pd__14 = _x25
-            _d_fp__q_r = _d_D__q_r*_pd__11 + _d_Psi__q_r*_pd__12 + _d_Qj__q_r*_pd__13 + _d_sigma__q_r*_pd__14
-            _d_fp__q_th = (_d_D__q_th*_pd__11 + _d_Psi__q_th*_pd__12 + _d_Qj__q_th*_pd__13
-                + _d_sigma__q_th*_pd__14)
-            _d_fp__q_thd = (_d_D__q_thd*_pd__11 + _d_Psi__q_thd*_pd__12 + _d_Qj__q_thd*_pd__13
-                + _d_sigma__q_thd*_pd__14)
-            _d_fp__k_d = _d_D__k_d*_pd__11 + _d_Psi__k_d*_pd__12 + _d_Qj__k_d*_pd__13 + _d_sigma__k_d*_pd__14
-            _d_fp__guess_q_th = (_d_D__guess_q_th*_pd__11 + _d_Psi__guess_q_th*_pd__12
-                + _d_Qj__guess_q_th*_pd__13 + _d_sigma__guess_q_th*_pd__14)
-            _d_fp__guess_q_thd = (_d_D__guess_q_thd*_pd__11 + _d_Psi__guess_q_thd*_pd__12
-                + _d_Qj__guess_q_thd*_pd__13 + _d_sigma__guess_q_thd*_pd__14)
+            _x10 = _u**-2
+            _x11 = _S1F*_x10
+            _Psi = _x11
+            _pd__5 = _x10
+            _d_Psi__q_r = _d_S1F__q_r*_pd__5
+            _d_Psi__q_th = _d_S1F__q_th*_pd__5
+            _d_Psi__q_thd = _d_S1F__q_thd*_pd__5
+            _d_Psi__k_d = _d_S1F__k_d*_pd__5
+            _d_Psi__guess_q_th = _d_S1F__guess_q_th*_pd__5
+            _d_Psi__guess_q_thd = _d_S1F__guess_q_thd*_pd__5
+            _x12 = math.sqrt(_D)
+            _x13 = math.sqrt(m)
+            _x14 = (1.0/math.sqrt(_x11))
+            _x15 = _x13*_x14
+            _ft = _x12*_x15
+            _x16 = (0.5)/_x12
+            _pd__6 = _x15*_x16
+            _x17 = (0.5)*_x12/(_x11*math.sqrt(_x11))
+            _pd__7 = -_x13*_x17
+            _d_ft__q_r = _d_D__q_r*_pd__6 + _d_Psi__q_r*_pd__7
+            _d_ft__q_th = _d_D__q_th*_pd__6 + _d_Psi__q_th*_pd__7
+            _d_ft__q_thd = _d_D__q_thd*_pd__6 + _d_Psi__q_thd*_pd__7
+            _d_ft__k_d = _d_D__k_d*_pd__6 + _d_Psi__k_d*_pd__7
+            _d_ft__guess_q_th = _d_D__guess_q_th*_pd__6 + _d_Psi__guess_q_th*_pd__7
+            _d_ft__guess_q_thd = _d_D__guess_q_thd*_pd__6 + _d_Psi__guess_q_thd*_pd__7
+            _x18 = _x12*_x14
+            _x19 = (1.0/_x13)
+            _x28 = (1.0/_sigma)
+            _x20 = _x19*_x28**2
+            _x21 = _x18*_x20
+            _fq = _Pj*_x21
+            _x22 = _Pj*_x20
+            _x23 = _x14*_x16
+            _pd__8 = _x22*_x23
+            _pd__9 = _x21
+            _pd__10 = -_x17*_x22
+            _pd__11 = -2.0*_Pj*_x18*_x19*_x28**3
+            _d_fq__q_r = _d_D__q_r*_pd__8 + _d_Pj__q_r*_pd__9 + _d_Psi__q_r*_pd__10 + _d_sigma__q_r*_pd__11
+            _d_fq__q_th = (_d_D__q_th*_pd__8 + _d_Pj__q_th*_pd__9 + _d_Psi__q_th*_pd__10
+                + _d_sigma__q_th*_pd__11)
+            _d_fq__q_thd = (_d_D__q_thd*_pd__8 + _d_Pj__q_thd*_pd__9 + _d_Psi__q_thd*_pd__10
+                + _d_sigma__q_thd*_pd__11)
+            _d_fq__k_d = _d_D__k_d*_pd__8 + _d_Pj__k_d*_pd__9 + _d_Psi__k_d*_pd__10 + _d_sigma__k_d*_pd__11
+            _d_fq__guess_q_th = (_d_D__guess_q_th*_pd__8 + _d_Pj__guess_q_th*_pd__9
+                + _d_Psi__guess_q_th*_pd__10 + _d_sigma__guess_q_th*_pd__11)
+            _d_fq__guess_q_thd = (_d_D__guess_q_thd*_pd__8 + _d_Pj__guess_q_thd*_pd__9
+                + _d_Psi__guess_q_thd*_pd__10 + _d_sigma__guess_q_thd*_pd__11)
+            _x24 = (m*math.sqrt(m))
+            _x25 = _x18*_x24*g_s
+            _x26 = _sinQ*_x25
+            _fp = _sigma*_x26
+            _x27 = _sigma*_sinQ*_x24*g_s
+            _pd__12 = _x23*_x27
+            _pd__13 = -_x17*_x27
+            _pd__14 = _x26
+            _pd__15 = _sigma*_x25
+            _d_fp__q_r = (_d_D__q_r*_pd__12 + _d_Psi__q_r*_pd__13 + _d_sigma__q_r*_pd__14
+                + _d_sinQ__q_r*_pd__15)
+            _d_fp__q_th = (_d_D__q_th*_pd__12 + _d_Psi__q_th*_pd__13 + _d_sigma__q_th*_pd__14
+                + _d_sinQ__q_th*_pd__15)
+            _d_fp__q_thd = (_d_D__q_thd*_pd__12 + _d_Psi__q_thd*_pd__13 + _d_sigma__q_thd*_pd__14
+                + _d_sinQ__q_thd*_pd__15)
+            _d_fp__k_d = (_d_D__k_d*_pd__12 + _d_Psi__k_d*_pd__13 + _d_sigma__k_d*_pd__14
+                + _d_sinQ__k_d*_pd__15)
+            _d_fp__guess_q_th = (_d_D__guess_q_th*_pd__12 + _d_Psi__guess_q_th*_pd__13
+                + _d_sigma__guess_q_th*_pd__14 + _d_sinQ__guess_q_th*_pd__15)
+            _d_fp__guess_q_thd = (_d_D__guess_q_thd*_pd__12 + _d_Psi__guess_q_thd*_pd__13
+                + _d_sigma__guess_q_thd*_pd__14 + _d_sinQ__guess_q_thd*_pd__15)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return fail(out, STATUS_IMAGINARY_MOMENTUM)
@@ -1317,27 +1354,27 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
     end_q_th = _q_end + q_th
     d_end_q_th__q_th = _d_q_end__q_th + 1.0
     end_q_r = q_r_lo
-    _x28 = math.sqrt(_D*_work)/math.sqrt(m)
-    end_q_rd = 2.0*_x28
-    _pd__15 = _x28/_D
-    _pd__16 = _x28/_work
-    d_end_q_rd__q_r = _d_D__q_r*_pd__15 + _d_work__q_r*_pd__16
-    d_end_q_rd__q_th = _d_D__q_th*_pd__15 + _d_work__q_th*_pd__16
-    d_end_q_rd__q_thd = _d_D__q_thd*_pd__15 + _d_work__q_thd*_pd__16
-    d_end_q_rd__k_d = _d_D__k_d*_pd__15 + _d_work__k_d*_pd__16
-    d_end_q_rd__guess_q_th = _d_D__guess_q_th*_pd__15 + _d_work__guess_q_th*_pd__16
-    d_end_q_rd__guess_q_thd = _d_D__guess_q_thd*_pd__15 + _d_work__guess_q_thd*_pd__16
-    _x29 = q_r**2
-    _x30 = q_r_lo**-2
-    _x31 = _x30/m
-    end_q_thd = _x31*(_p_end + _x29*m*q_thd)
-    _pd__17 = _x31
-    d_end_q_thd__q_r = _d_p_end__q_r*_pd__17 + 2.0*_x30*q_r*q_thd
-    d_end_q_thd__q_th = _d_p_end__q_th*_pd__17
-    d_end_q_thd__q_thd = _d_p_end__q_thd*_pd__17 + _x29*_x30
-    d_end_q_thd__k_d = _d_p_end__k_d*_pd__17
-    d_end_q_thd__guess_q_th = _d_p_end__guess_q_th*_pd__17
-    d_end_q_thd__guess_q_thd = _d_p_end__guess_q_thd*_pd__17
+    _x29 = math.sqrt(_D*_work)/math.sqrt(m)
+    end_q_rd = 2.0*_x29
+    _pd__16 = _x29/_D
+    _pd__17 = _x29/_work
+    d_end_q_rd__q_r = _d_D__q_r*_pd__16 + _d_work__q_r*_pd__17
+    d_end_q_rd__q_th = _d_D__q_th*_pd__16 + _d_work__q_th*_pd__17
+    d_end_q_rd__q_thd = _d_D__q_thd*_pd__16 + _d_work__q_thd*_pd__17
+    d_end_q_rd__k_d = _d_D__k_d*_pd__16 + _d_work__k_d*_pd__17
+    d_end_q_rd__guess_q_th = _d_D__guess_q_th*_pd__16 + _d_work__guess_q_th*_pd__17
+    d_end_q_rd__guess_q_thd = _d_D__guess_q_thd*_pd__16 + _d_work__guess_q_thd*_pd__17
+    _x30 = q_r**2
+    _x31 = q_r_lo**-2
+    _x32 = _x31/m
+    end_q_thd = _x32*(_p_end + _x30*m*q_thd)
+    _pd__18 = _x32
+    d_end_q_thd__q_r = _d_p_end__q_r*_pd__18 + 2.0*_x31*q_r*q_thd
+    d_end_q_thd__q_th = _d_p_end__q_th*_pd__18
+    d_end_q_thd__q_thd = _d_p_end__q_thd*_pd__18 + _x30*_x31
+    d_end_q_thd__k_d = _d_p_end__k_d*_pd__18
+    d_end_q_thd__guess_q_th = _d_p_end__guess_q_th*_pd__18
+    d_end_q_thd__guess_q_thd = _d_p_end__guess_q_thd*_pd__18
     passes = _passes
     # derivatives of the outputs
     d_t_half__q_r = _d_t_end__q_r

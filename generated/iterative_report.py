@@ -16,7 +16,7 @@
 #   gravity_type3.py sha256:e155e8cf6c61786f
 #   gravity_type4.py sha256:46ba3275b963f094
 #   gravity_type5.py sha256:6b0f36a3aab94d08
-#   iterative.py sha256:574a4ee4157d47f7
+#   iterative.py sha256:264d13490e07b704
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""

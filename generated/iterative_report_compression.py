@@ -15,8 +15,8 @@
 #   gravity_type3.py sha256:e155e8cf6c61786f
 #   gravity_type4.py sha256:46ba3275b963f094
 #   gravity_type5.py sha256:6b0f36a3aab94d08
-#   iterative.py sha256:574a4ee4157d47f7
-#   iterative_report.py sha256:541a3c332ebe1f9e
+#   iterative.py sha256:264d13490e07b704
+#   iterative_report.py sha256:c8e1e7bc5099cb83
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""

@@ -16,7 +16,7 @@
 #   gravity_type3_jacobian.py sha256:75431d77cc206669
 #   gravity_type4_jacobian.py sha256:928cae4a2dfd50aa
 #   gravity_type5_jacobian.py sha256:90b22e88dbd42abf
-#   iterative_jacobian.py sha256:c2870a2a132d267e
+#   iterative_jacobian.py sha256:2d2e80277d0d8517
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""

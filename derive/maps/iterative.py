@@ -121,18 +121,28 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
     F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
     sigma, F, psi, s1f = sym("_sigma"), sym("_F"), sym("_Psi"), sym("_S1F")
     at = {_D: D, _PSI: psi, _U: u, q_r: sigma, q_th: Q, p_th: P}
+    # sin Q_j beside cos Q_j (in F_r): one sincos call per node and pass instead of a sin and a cos
+    sin_q = sym("_sinQ")
     evaluate = (
         Nodes(
             nq,
             ((Q, "Q"), (P, "P"), (u, "u")),
             (),
-            (Stage(((sigma, base + D * u**2), (F, F_r.subs({q_r: sigma, q_th: Q, p_th: P})))),),
-            ((sigma, "sigma"), (F, "F")),
-            comment="node values of the pass: sigma, F_r (29)",
+            (
+                Stage(
+                    (
+                        (sigma, base + D * u**2),
+                        (F, F_r.subs({q_r: sigma, q_th: Q, p_th: P})),
+                        (sin_q, sp.sin(Q)),
+                    )
+                ),
+            ),
+            ((sigma, "sigma"), (F, "F"), (sin_q, "sinQ")),
+            comment="node values of the pass: sigma, F_r (29), sin Q",
         ),
         Nodes(
             nq,
-            ((Q, "Q"), (P, "P"), (u, "u"), (sigma, "sigma")),
+            ((Q, "Q"), (P, "P"), (u, "u"), (sigma, "sigma"), (sin_q, "sinQ")),
             ((s1f, "S1", "F"),),
             (
                 Stage(
@@ -140,7 +150,7 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
                         (psi, s1f / u**2),
                         (sym("_ft"), dt.subs(at)),
                         (sym("_fq"), dq.subs(at)),
-                        (sym("_fp"), dp.subs(at)),
+                        (sym("_fp"), dp.subs(at).subs(sp.sin(Q), sin_q)),
                     ),
                     (Guard(psi > 0, "IMAGINARY_MOMENTUM", "p_r^2 = 2 m int F_r > 0 at every node"),),
                 ),
