@@ -351,3 +351,33 @@ def test_a_bad_touchdown_is_refused_naming_the_value(given, error, says):
     with pytest.raises(error) as info:
         slipmaps.stance("geyer", slipmaps.HUMAN_RUNNER, given)
     assert says in str(info.value)
+
+
+@pytest.mark.parametrize("n", [0, 1, 8, 9, 17, 200, 1001])
+@pytest.mark.parametrize("cost", [None, 0.0, 1.0])
+def test_run_blocks_runs_every_row_once_whether_or_not_a_row_cost_is_known(monkeypatch, n, cost):
+    """batch.run_blocks: the blocks cover rows 0..n once each, in order within a block, whether the
+    cost of a row is measured on the first PROBE rows (cost None), known to be small (0: one
+    thread) or known to be large (1 s: every thread, no probe)."""
+    import threading
+
+    from slipmaps.runtime.api import batch
+
+    monkeypatch.setattr(batch, "_threads", lambda: 3)
+    key = object()
+    if cost is not None:
+        monkeypatch.setitem(batch._COST, key, cost)
+    seen, lock = [], threading.Lock()
+
+    def block(lo, hi):
+        with lock:
+            seen.append((lo, hi))
+
+    batch.run_blocks(block, n, key)
+    rows = sorted(i for lo, hi in seen for i in range(lo, hi))
+    assert rows == list(range(n))
+    if cost == 1.0 and n > batch.PROBE:
+        assert len(seen) == 3 and min(lo for lo, _ in seen) == 0  # split at once, no probe
+    if cost is None and n > batch.PROBE:
+        assert (0, batch.PROBE) in seen and key in batch._COST  # probed and remembered
+        batch._COST.pop(key)

@@ -3,11 +3,12 @@
 Every generated role kernel has a batch form ``kernel_rows(X, P, OUT, STATUS)`` (derive/templates/
 kernels.py.j2): a serial loop over the rows of ``X`` (``P`` one parameter record for every row, or
 one per row) that releases the GIL. :func:`run_rows` calls it, and :func:`run_blocks` any compiled
-loop over rows (the deadbeat solver's), on the first block of rows in the calling thread and, when
-the rest would take long enough to pay for it, spreads the rest over numba's thread count
-(``numba.get_num_threads()``, set by ``NUMBA_NUM_THREADS``) in Python threads. A short batch
-therefore costs one call, about what a scalar call costs; each row's result does not depend on how
-the rows were split.
+loop over rows (the deadbeat solver's). The first batch of a kernel runs its first few rows in the
+calling thread, timed: the cost of a row, remembered for the kernel's later batches. When the rows
+would take long enough to pay for it, they are spread evenly over numba's thread count
+(``numba.get_num_threads()``, set by ``NUMBA_NUM_THREADS``) in Python threads, the calling thread
+running one block. A batch of up to :data:`PROBE` rows costs one call, about what a scalar call
+costs; each row's result does not depend on how the rows were split.
 """
 
 from __future__ import annotations
@@ -19,10 +20,15 @@ import numpy as np
 
 __all__ = ["run_blocks", "run_rows"]
 
-#: Rows of the first block, run in the calling thread (it measures the cost of a row).
-FIRST_BLOCK = 64
+#: Rows run first, in the calling thread, to measure the cost of a row: few, since the threads
+#: start after them (64 rows of the exact map's Jacobian, 1 ms, made a batch of 200 rows 1.3x as
+#: long as an even split).
+PROBE = 8
 #: The rest goes to threads when it would take at least this long in one thread [s].
 THREADED_SECONDS = 2e-4
+
+#: Seconds per row of a kernel's batches (the first batch's timed rows), by the kernel.
+_COST: dict = {}
 
 _POOL: ThreadPoolExecutor | None = None
 _POOL_SIZE = 0
@@ -43,27 +49,31 @@ def _pool(size: int) -> ThreadPoolExecutor:
     return _POOL
 
 
-def run_blocks(block, n: int) -> None:
+def run_blocks(block, n: int, key=None) -> None:
     """``block(lo, hi)`` over the rows 0..n in contiguous blocks (each releasing the GIL): the first
-    block here, the rest in blocks on threads when that pays (module docstring)."""
-    if n <= FIRST_BLOCK:  # one block, here: nothing to time
+    :data:`PROBE` rows here and timed unless the cost of a row of ``key`` (the kernel; None: no
+    memory) is known, the rest in even blocks on threads when that pays (module docstring)."""
+    if n <= PROBE:  # one block, here: nothing to time
         if n:
             block(0, n)
         return
-    first = FIRST_BLOCK
-    start = time.perf_counter()
-    block(0, first)
+    first, per_row = 0, _COST.get(key) if key is not None else None
+    if per_row is None:
+        first = PROBE
+        start = time.perf_counter()
+        block(0, first)
+        per_row = (time.perf_counter() - start) / first
+        if key is not None:
+            _COST[key] = per_row
     rest = n - first
-    threads = min(_threads(), rest // FIRST_BLOCK)
-    per_row = (time.perf_counter() - start) / first
+    threads = min(_threads(), rest)
     if threads < 2 or per_row * rest < THREADED_SECONDS:
         block(first, n)
         return
-    bounds = np.linspace(first, n, threads + 1).astype(np.int64)
-    blocks = list(zip(bounds[:-1].tolist(), bounds[1:].tolist(), strict=True))
+    bounds = [first + rest * t // threads for t in range(threads + 1)]
     pool = _pool(threads - 1)
-    jobs = [pool.submit(block, lo, hi) for lo, hi in blocks[1:]]
-    block(*blocks[0])  # one block here while the threads run the others
+    jobs = [pool.submit(block, bounds[t], bounds[t + 1]) for t in range(1, threads)]
+    block(bounds[0], bounds[1])  # one block here while the threads run the others
     for job in jobs:
         job.result()
 
@@ -72,7 +82,7 @@ def run_rows(rows, X: np.ndarray, P: np.ndarray, OUT: np.ndarray, STATUS: np.nda
     """A role kernel's batch form ``rows(X, P, OUT, STATUS)`` over every row of ``X`` (C-contiguous
     float64, one row per call of the kernel; ``P`` (1, k) for one parameter record, (n, k) for one
     per row; ``OUT`` and ``STATUS`` one row each), by :func:`run_blocks`."""
-    if X.shape[0] <= FIRST_BLOCK:  # one block (run_blocks would run it here too): no closure
+    if X.shape[0] <= PROBE:  # one block (run_blocks would run it here too): no closure
         rows(X, P, OUT, STATUS)
         return
     shared = P.shape[0] == 1
@@ -80,4 +90,4 @@ def run_rows(rows, X: np.ndarray, P: np.ndarray, OUT: np.ndarray, STATUS: np.nda
     def block(lo, hi):
         rows(X[lo:hi], P if shared else P[lo:hi], OUT[lo:hi], STATUS[lo:hi])
 
-    run_blocks(block, X.shape[0])
+    run_blocks(block, X.shape[0], rows)

@@ -884,5 +884,5 @@ class Solver:
         def block(lo, hi):
             self._rows(X[lo:hi], P if shared else P[lo:hi], T[lo:hi], settings, OUT[lo:hi])
 
-        run_blocks(block, n)
+        run_blocks(block, n, self._rows)
         return OUT
