@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:1012e23d16987856
+#   support.py sha256:d030a00656e43f40
 #   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:466d0bfe5cd60358
+#   geyer.py sha256:bb01f902cd8eb450
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and
 apex-return kernels."""

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:1012e23d16987856
-#   flight_jacobian.py sha256:de69e8149ca97ebb
-#   geyer_jacobian.py sha256:7a8915e24c07fd59
+#   support.py sha256:d030a00656e43f40
+#   flight_jacobian.py sha256:e2ee5667673d1914
+#   geyer_jacobian.py sha256:4f6e2e8da6e5d9c0
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type3: JVP kernels, and for
 a map its stance and apex-return Jacobians."""

@@ -6,16 +6,16 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:1012e23d16987856
+#   support.py sha256:d030a00656e43f40
 #   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:466d0bfe5cd60358
-#   geyer_vs.py sha256:3cd6cc8171df3dbf
-#   gravity_type0.py sha256:ebefe27fd5b5212a
-#   gravity_type1.py sha256:089d75c413a99da5
-#   gravity_type2.py sha256:134de98cc6b0e395
-#   gravity_type3.py sha256:e155e8cf6c61786f
-#   gravity_type4.py sha256:46ba3275b963f094
-#   gravity_type5.py sha256:6b0f36a3aab94d08
+#   geyer.py sha256:bb01f902cd8eb450
+#   geyer_vs.py sha256:207cbdd9c11fa5f8
+#   gravity_type0.py sha256:a4f1ad93cdadb8ec
+#   gravity_type1.py sha256:f3e86a5151d748d3
+#   gravity_type2.py sha256:84611e9555760f89
+#   gravity_type3.py sha256:227759d9dd9b2ed8
+#   gravity_type4.py sha256:a4d19db8e48997d7
+#   gravity_type5.py sha256:6174f366162af584
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""

@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:1012e23d16987856
-#   flight_jacobian.py sha256:de69e8149ca97ebb
-#   geyer_jacobian.py sha256:7a8915e24c07fd59
-#   geyer_vs_jacobian.py sha256:d096cab4cfb8aca7
-#   gravity_type0_jacobian.py sha256:efb41d6075f3bff5
-#   gravity_type1_jacobian.py sha256:650e0fd4240c0441
-#   gravity_type2_jacobian.py sha256:8dc47fbee93776b2
-#   gravity_type3_jacobian.py sha256:75431d77cc206669
-#   gravity_type4_jacobian.py sha256:928cae4a2dfd50aa
-#   gravity_type5_jacobian.py sha256:90b22e88dbd42abf
-#   iterative_jacobian.py sha256:2d2e80277d0d8517
+#   support.py sha256:d030a00656e43f40
+#   flight_jacobian.py sha256:e2ee5667673d1914
+#   geyer_jacobian.py sha256:4f6e2e8da6e5d9c0
+#   geyer_vs_jacobian.py sha256:6c6013e131d61a6b
+#   gravity_type0_jacobian.py sha256:068446da703aabc2
+#   gravity_type1_jacobian.py sha256:d4baf04a82644441
+#   gravity_type2_jacobian.py sha256:3b30aa09e51ff7d8
+#   gravity_type3_jacobian.py sha256:921b3e410815cc03
+#   gravity_type4_jacobian.py sha256:6357caaff500de54
+#   gravity_type5_jacobian.py sha256:5099f925652c43e2
+#   iterative_jacobian.py sha256:6f0454be60d06aee
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:1012e23d16987856
+#   support.py sha256:d030a00656e43f40
 #   flight.py sha256:a75b93d7de718e56
-#   geyer_vs.py sha256:3cd6cc8171df3dbf
+#   geyer_vs.py sha256:207cbdd9c11fa5f8
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""

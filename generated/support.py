@@ -38,12 +38,29 @@ def stack(typingctx, n):
     return types.CPointer(types.float64)(n), codegen
 
 
-@njit(cache=True, error_model="numpy")
-def fail(out, status):
-    """A failed row: ``out`` all NaN; returns ``status``."""
-    for j in range(out.shape[0]):
-        out[j] = math.nan
-    return status
+@intrinsic
+def fail(typingctx, out, status):
+    """A failed row: ``out`` (a 1-D float array) all NaN; returns ``status`` as an int64. Written in
+    place at each call (an intrinsic): a function would compile once per status, since numba types
+    a status constant as a literal (0.05 s each, 17 of them in a first iterative Jacobian)."""
+    if not (
+        isinstance(out, types.Array)
+        and out.ndim == 1
+        and isinstance(out.dtype, types.Float)
+        and isinstance(status, types.Integer)
+    ):
+        return None
+
+    def codegen(context, builder, signature, args):
+        aryty = signature.args[0]
+        ary = context.make_array(aryty)(context, builder, args[0])
+        (n,) = cgutils.unpack_tuple(builder, ary.shape, 1)
+        nan = context.get_constant(aryty.dtype, math.nan)
+        with cgutils.for_range(builder, n) as loop:
+            builder.store(nan, cgutils.get_item_pointer(context, builder, aryty, ary, [loop.index]))
+        return args[1]
+
+    return types.int64(out, types.int64), codegen
 
 
 @njit(cache=True, error_model="numpy")
