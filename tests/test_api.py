@@ -381,3 +381,24 @@ def test_run_blocks_runs_every_row_once_whether_or_not_a_row_cost_is_known(monke
     if cost is None and n > batch.PROBE:
         assert (0, batch.PROBE) in seen and key in batch._COST  # probed and remembered
         batch._COST.pop(key)
+
+
+def test_run_blocks_does_not_remember_a_row_cost_measured_while_the_kernel_compiled():
+    """A kernel's first rows in a process compile it (seconds): that time is not the cost of a row,
+    so run_blocks times the next batch's first rows again instead of remembering it."""
+    from slipmaps.runtime.api import batch
+
+    class Kernel:  # a dispatcher's signatures: one more after a compilation
+        signatures: list = []
+
+    key = Kernel()
+
+    def block(lo, hi):
+        if not key.signatures:
+            key.signatures = ["compiled"]
+
+    batch.run_blocks(block, 100, key)
+    assert key not in batch._COST
+    batch.run_blocks(block, 100, key)
+    assert key in batch._COST
+    batch._COST.pop(key)

@@ -27,7 +27,8 @@ PROBE = 8
 #: The rest goes to threads when it would take at least this long in one thread [s].
 THREADED_SECONDS = 2e-4
 
-#: Seconds per row of a kernel's batches (the first batch's timed rows), by the kernel.
+#: Seconds per row of a kernel's batches (the first timed rows that did not compile it), by the
+#: kernel (a numba dispatcher: its ``signatures`` tell a compilation).
 _COST: dict = {}
 
 _POOL: ThreadPoolExecutor | None = None
@@ -60,10 +61,12 @@ def run_blocks(block, n: int, key=None) -> None:
     first, per_row = 0, _COST.get(key) if key is not None else None
     if per_row is None:
         first = PROBE
+        compiled = len(getattr(key, "signatures", ()))
         start = time.perf_counter()
         block(0, first)
         per_row = (time.perf_counter() - start) / first
-        if key is not None:
+        # remembered unless the kernel compiled (or loaded from numba's cache) in those rows
+        if key is not None and len(getattr(key, "signatures", ())) == compiled:
             _COST[key] = per_row
     rest = n - first
     threads = min(_threads(), rest)
