@@ -295,11 +295,11 @@ def _put(var: str, codes: list[str]) -> str:
 FINITE_CHAIN = 24
 
 
-def _finite_chain(codes: list[str]) -> str | None:
+def _finite_chain(codes: list[str], limit: int | None = FINITE_CHAIN) -> str | None:
     """``math.isfinite(c0) and math.isfinite(c1) ...`` over the distinct codes that are not numbers,
-    or None when there are more than :data:`FINITE_CHAIN` of them."""
+    or None when there are more than ``limit`` of them (None: no limit)."""
     names = list(dict.fromkeys(c for c in codes if not re.fullmatch(r"-?[0-9.]+(e-?[0-9]+)?", c)))
-    if len(names) > FINITE_CHAIN:
+    if limit is not None and len(names) > limit:
         return None
     return " and ".join(f"math.isfinite({c})" for c in names) or "True"
 
@@ -929,7 +929,15 @@ def lower(kernel: Kernel) -> dict:
         "returns": docs,
         "n_out": len(outputs),
         "store": _put("out", [forward.get(f.name, f.name) for f in outputs]),
-        "finite_chain": _finite_chain([forward.get(f.name, f.name) for f in outputs]) if not tails else None,
+        # a role kernel checks its whole row (a chain if short, else support.finite); another kernel
+        # its checked outputs
+        "finite_chain": None
+        if tails
+        else _finite_chain([forward.get(f.name, f.name) for f in outputs])
+        if how.layout is not None
+        else _finite_chain(
+            [forward.get(f.name, f.name) for f in outputs if f.name not in kernel.unchecked], None
+        ),
         "input_guard": input_guard,
         "body": body,
         "status": kernel.status,

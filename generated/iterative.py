@@ -336,8 +336,8 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     if not ((end_q_r > 0.0)):
         return _NAN6 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(0.0)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_th)
+            and math.isfinite(end_q_thd) and math.isfinite(passes)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, 0.0, end_q_th, end_q_thd, passes, STATUS_OK)
 

@@ -15,7 +15,7 @@
 #   gravity_type3.py sha256:227759d9dd9b2ed8
 #   gravity_type4.py sha256:a4d19db8e48997d7
 #   gravity_type5.py sha256:6174f366162af584
-#   iterative.py sha256:bc385ad8f576ecef
+#   iterative.py sha256:5228c8abc0385c9c
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:d030a00656e43f40
 #   flight.py sha256:a75b93d7de718e56
-#   iterative.py sha256:bc385ad8f576ecef
+#   iterative.py sha256:5228c8abc0385c9c
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

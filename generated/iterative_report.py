@@ -16,7 +16,7 @@
 #   gravity_type3.py sha256:227759d9dd9b2ed8
 #   gravity_type4.py sha256:a4d19db8e48997d7
 #   gravity_type5.py sha256:6174f366162af584
-#   iterative.py sha256:bc385ad8f576ecef
+#   iterative.py sha256:5228c8abc0385c9c
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -183,8 +183,8 @@ def report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_
     bottom_q_th = c_Q
     bottom_q_thd = c_P/(bottom_q_r**2*m)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(bottom_q_r) and math.isfinite(0.0)
-            and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(E_ab)):
+    if not (math.isfinite(t_bottom) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_th)
+            and math.isfinite(bottom_q_thd) and math.isfinite(E_ab)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, E_ab, STATUS_OK)
 
