@@ -62,19 +62,27 @@ def test_compare_prints_its_table_before_drawing_the_plot(tmp_path, capsys, monk
     assert capsys.readouterr().out.strip() == f"plot: {png}"
 
 
-def test_compare_plot_draws_the_exact_curve_from_its_solve_ivp_backend():
-    # the plotted curve of a map with a solve_ivp backend comes from it unless a method was chosen
-    # (a first run then compiles no state-at-time kernel of the exact map); the curve is the
-    # compiled kernel's to round-off (measured 3.6e-15 on the default step)
-    from slipmaps.runtime.api.maps import trajectory
-    from slipmaps.runtime.cli.compare import _curve_options
+def test_compare_runs_the_exact_step_through_its_solve_ivp_backend():
+    # one step of a map with a solve_ivp backend (its stance and its plotted curve) runs through it
+    # unless a method was chosen: a first run on an empty cache compiles no exact kernel; the
+    # backend's step and curve are the compiled simulator's to round-off (measured: 3.6e-15 on the
+    # curve, 1.1e-15 on the table's values at the default step, relative above 1)
+    from slipmaps.runtime.api.maps import stance, trajectory
+    from slipmaps.runtime.cli.compare import one_step_options
 
     exact = index.get("exact")
-    assert _curve_options(exact, {"rtol": 1e-9}) == {"rtol": 1e-9, "method": "scipy"}
-    assert _curve_options(exact, {"method": "compiled"}) == {"method": "compiled"}
-    assert _curve_options(index.get("geyer"), {}) == {}
-    td = compare(HUMAN_RUNNER).touchdown
-    t, curve, status = trajectory("exact", HUMAN_RUNNER, td, **_curve_options(exact, {}))
+    assert one_step_options(exact, {"rtol": 1e-9}) == {"rtol": 1e-9, "method": "scipy"}
+    assert one_step_options(exact, {"method": "compiled"}) == {"method": "compiled"}
+    assert one_step_options(index.get("geyer"), {}) == {}
+    c = compare(HUMAN_RUNNER)
+    assert c.against.options == {"method": "scipy"} and c.map.options == {}
+    asked = compare(HUMAN_RUNNER, against_options={"method": "compiled"})
+    assert asked.against.options == {"method": "compiled"}
+    rows = [(r.reference, s.reference) for r, s in zip(c.rows, asked.rows, strict=True)]
+    assert rows and all(abs(a - b) <= 1e-12 * max(1.0, abs(b)) for a, b in rows)
+    td = c.touchdown
+    assert stance("exact", HUMAN_RUNNER, td, method="scipy").ok
+    t, curve, status = trajectory("exact", HUMAN_RUNNER, td, **c.against.options)
     _, compiled, compiled_status = trajectory("exact", HUMAN_RUNNER, td, t=t)
     assert status == compiled_status == Status.OK and t.size == 200
     assert abs(curve - compiled).max() < 1e-12

@@ -211,7 +211,8 @@ def compare(
     half = info if isinstance(info, index.HalfInfo) else None
     for name in (map, against):
         index.lookup(name).check_params(params)  # ValueError naming the requirement, before any work
-    options, against_options = dict(options or {}), dict(against_options or {})
+    options = one_step_options(index.lookup(map), dict(options or {}))
+    against_options = one_step_options(index.lookup(against), dict(against_options or {}))
     if touchdown is not None:
         if apex_height is not None or apex_speed is not None or touchdown_angle is not None:
             raise ValueError(
@@ -366,12 +367,13 @@ def _mark_states(axes, t, states, events, label: str, color: str) -> None:
         ax.margins(y=0.12)
 
 
-def _curve_options(info, options: dict) -> dict:
-    """The options a map's plotted curve runs with: those of its stance, except that a map with a
-    ``solve_ivp`` backend (the exact map's ``method="scipy"``) draws its curve from that backend's
-    dense output unless a method was chosen. Its stance, bottom and liftoff come from the compiled
-    kernel (the two stances agree to 1e-14: docs/performance.md); the curve needs no compiled
-    state-at-time kernel, which a first run on an empty cache would compile for about 5 s."""
+def one_step_options(info, options: dict) -> dict:
+    """The options one step of ``info``'s map runs with: ``options``, except that a map with a
+    ``solve_ivp`` backend (the exact map's ``method="scipy"``) runs the step, and draws its curve,
+    through that backend unless a method was chosen. One stance integrates in a few milliseconds
+    there, where the compiled simulator's first use on an empty numba cache compiles it for 10-15 s;
+    the two agree to 1e-14 (docs/performance.md). ``--against-option method=compiled`` runs the
+    compiled simulator."""
     for option in info.options:
         if option.name not in options and "scipy" in option.backends:
             return {**options, option.name: "scipy"}
@@ -410,7 +412,7 @@ def plot(c: Comparison, path: str) -> str:
             _mark_states(axes, t, states, ("touchdown", "bottom", "liftoff"), label, style["color"])
             continue
         label = f"{side.map} ({info.title})"
-        t, states, _ = trajectory(side.map, c.params, td, **_curve_options(info, side.options))
+        t, states, _ = trajectory(side.map, c.params, td, **side.options)
         if t.size:
             ok = np.all(np.isfinite(states), axis=1)
             axes[0].plot(t[ok], states[ok, 0], label=label, **style)
