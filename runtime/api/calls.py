@@ -51,7 +51,8 @@ class Backend(Protocol):
     ``stance_jacobian``, ``apex_return_jacobian``) once or over rows; failures are statuses."""
 
     def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
-        """The role's outputs (a Jacobian's: values, then row-major derivatives) and the status."""
+        """The role's outputs as Python floats (a Jacobian's: values, then row-major derivatives)
+        and the status."""
 
     def rows(
         self, call: Call, role: str, rows: Mapping[str, np.ndarray], inputs: Mapping[str, float], n: int, show
@@ -65,7 +66,7 @@ class KernelBackend:
 
     def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
         spec = call.spec(role)
-        x = np.array([inputs[a] for a in spec.x], dtype=np.float64)
+        x = np.fromiter(map(inputs.__getitem__, spec.x), np.float64, len(spec.x))
         out = np.empty(spec.width)
         status = kernel_functions(spec)[0](x, call.record(spec), out)
         return (*out.tolist(), status)
@@ -75,7 +76,10 @@ class KernelBackend:
         out = np.empty((n, spec.width))
         status = np.empty(n, dtype=np.int64)
         run_rows(
-            kernel_functions(spec)[1], *layout_rows(spec, call.record(spec), rows, inputs, n), out, status
+            kernel_functions(spec)[1],
+            *layout_rows(spec, call.record(spec, rows=True), rows, inputs, n),
+            out,
+            status,
         )
         return out, status
 
@@ -93,7 +97,7 @@ class Columns(dict):
 
 def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int):
     """``(X, P)`` of ``n`` rows of a role kernel: ``X`` (n, len(x)) its inputs by name from the
-    per-row arrays ``rows`` or the per-call ``inputs``; ``P`` the parameter ``record`` (1, k), or
+    per-row arrays ``rows`` or the per-call ``inputs``; ``P`` the parameter ``record`` (1, k) as it is, or
     one per row (n, k) when ``rows`` also holds a parameter (a plant's stiffness per run). A record
     field that is also an input (the stance's touchdown leg length ``q_r_td``) is not one: a role
     kernel reads it from ``x`` (derive/lower.py unpacks from ``p`` only the names ``x`` lacks)."""
@@ -105,12 +109,12 @@ def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int
         X = np.empty((n, len(spec.x)))
         for j, a in enumerate(spec.x):
             X[:, j] = rows[a] if a in rows else inputs[a]
-    varying = [(spec.p.index(f), f) for f in rows if f in spec.p and f not in spec.x]
+    varying = [f for f in rows if f in spec.record_only]
     if not varying:
-        return X, record[None, :]
-    P = np.repeat(record[None, :], n, axis=0)
-    for j, f in varying:
-        P[:, j] = rows[f]
+        return X, record
+    P = np.repeat(record, n, axis=0)
+    for f in varying:
+        P[:, spec.p.index(f)] = rows[f]
     return X, P
 
 
@@ -157,7 +161,7 @@ class Call:
         """Validated once per (map, parameters, options); ``half``: a half-stance map. ValueError
         naming an unknown map or option, or a requirement the parameters break."""
         try:
-            key = (name, params, tuple(sorted(options.items())), half)
+            key = (name, params, tuple(sorted(options.items())) if options else (), half)
             hash(key)
         except TypeError:  # an unhashable option value: validate (and refuse) it uncached
             return cls._build(name, params, options, half)
@@ -179,15 +183,16 @@ class Call:
         backend = KERNELS if module is None else _backend_module(module)
         return cls(info, params, resolved, values, backend, info.kernels_for(resolved))
 
-    def record(self, spec) -> np.ndarray:
+    def record(self, spec, rows: bool = False) -> np.ndarray:
         """The parameter record ``p`` of a role kernel (the map's parameters and kernel options by
-        the index's names; one per call, shared by its roles)."""
-        record = self._records.get(spec.p)
-        if record is None:
+        the index's names; one per call, shared by its roles); ``rows``: as the (1, k) ``P`` of its
+        batch form."""
+        records = self._records.get(spec.p)
+        if records is None:
             # writable, as every array a kernel is given (numba compiles a read-only one apart)
             record = np.array([self.values.get(f, math.nan) for f in spec.p], dtype=np.float64)
-            self._records[spec.p] = record
-        return record
+            records = self._records[spec.p] = (record, record[None, :])
+        return records[rows]
 
     def spec(self, role: str):
         """The role's kernel spec; ValueError when the map has none (naming the maps that have one)."""
@@ -201,7 +206,7 @@ class Call:
         when it has a more specific one than the status's (the solve_ivp reference names the stage
         and event that failed), else None."""
         res = self.backend.scalar(self, role, inputs)
-        return _STATUS[int(res[-1])], tuple(map(float, res[:-1])), getattr(res, "message", None)
+        return _STATUS[int(res[-1])], res[:-1], getattr(res, "message", None)
 
     def rows(self, role: str, rows: Mapping[str, np.ndarray], inputs: Mapping[str, float], n: int, show=None):
         """``(out, status)`` of the role over ``n`` rows (:meth:`Backend.rows`)."""

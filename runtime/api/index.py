@@ -17,7 +17,7 @@ import importlib
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from functools import cache
+from functools import cache, cached_property
 
 from slipmaps.generated import maps_index
 
@@ -71,6 +71,12 @@ class KernelSpec:
             wrt=tuple(row.get("wrt", ())),
             base=row.get("base"),
         )
+
+    @cached_property
+    def record_only(self) -> frozenset[str]:
+        """The names of the parameter record that are not inputs: a batch's per-row arrays of these
+        make a record per row (:func:`~.calls.layout_rows`)."""
+        return frozenset(self.p) - frozenset(self.x)
 
     @property
     def width(self) -> int:

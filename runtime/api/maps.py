@@ -58,12 +58,15 @@ __all__ = [
 
 #: The apex-return inputs (``derive/params.py``): API name -> kernel argument, check and default.
 APEX_INPUTS = {r["name"]: r for r in _table.APEX_INPUTS}
+#: API name -> (kernel argument, the check of its domain).
+_APEX_ARGS = {k: (r["arg"], CHECKS[r["domain"]]) for k, r in APEX_INPUTS.items()}
 
 
 def _result(call: Call, role: str, status: Status, row, inputs: dict, message: str | None = None) -> Result:
     names = call.spec(role).outputs
-    values = dict(zip(names, row, strict=True)) if status == Status.OK else dict.fromkeys(names, math.nan)
-    return Result(call.info.name, role, status, message or MESSAGES[int(status)], values, inputs)
+    # a row is the kernel's outputs, one per name (the layout's width)
+    values = dict(zip(names, row, strict=False)) if status == Status.OK else dict.fromkeys(names, math.nan)
+    return Result.of(call.info.name, role, status, message or MESSAGES[int(status)], values, inputs)
 
 
 def touchdown_inputs(call: Call, state) -> dict[str, float]:
@@ -73,7 +76,7 @@ def touchdown_inputs(call: Call, state) -> dict[str, float]:
 
 def apex_inputs(given: dict) -> dict[str, float]:
     """The apex-return inputs by kernel argument, each checked by its domain (one line naming it)."""
-    return {APEX_INPUTS[k]["arg"]: CHECKS[APEX_INPUTS[k]["domain"]](k, v) for k, v in given.items()}
+    return {_APEX_ARGS[k][0]: _APEX_ARGS[k][1](k, v) for k, v in given.items()}
 
 
 def stance(name: str, params: SlipParams, touchdown, **options) -> Result:
@@ -92,7 +95,8 @@ def apex_return(name: str, params: SlipParams, given: dict, **options) -> Result
     call = Call.of(name, params, options)
     inputs = apex_inputs(given)
     status, row, message = call.scalar("apex_return", inputs)
-    point = {k: inputs[APEX_INPUTS[k]["arg"]] for k in given} | {"options": dict(call.options)}
+    point = {k: inputs[_APEX_ARGS[k][0]] for k in given}
+    point["options"] = dict(call.options)
     return _result(call, "apex_return", status, row, point, message)
 
 
@@ -129,17 +133,20 @@ def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tup
     row)."""
     arrays, inputs = {}, {}
     for key, x in given.items():
-        arg = APEX_INPUTS[key]["arg"]
+        arg = _APEX_ARGS[key][0]
         if type(x) is float:  # a number (the defaults among them): no array
             inputs[arg] = x
             continue
-        arr = real_array(key, x)
+        arr = x if type(x) is np.ndarray and x.dtype == np.float64 else real_array(key, x)
         if arr.ndim:
             arrays[arg] = arr
         else:
             inputs[arg] = float(arr)
     shapes = {x.shape for x in arrays.values()}
-    shape = next(iter(shapes)) if len(shapes) == 1 else np.broadcast_shapes(*shapes)
+    one = len(shapes) == 1
+    shape = next(iter(shapes)) if one else np.broadcast_shapes(*shapes)
+    if one and len(shape) == 1:  # arrays of one 1-D shape (the common call): the rows as they are
+        return arrays, inputs, shape
     n = math.prod(shape)
     rows = {
         a: x if x.shape == (n,) else (x if x.shape == shape else np.broadcast_to(x, shape)).reshape(n)
