@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:d030a00656e43f40
+#   support.py sha256:e488e9166d8584f2
 #   exact_stance.py sha256:299560de25340ae1
 #   flight.py sha256:a75b93d7de718e56
 # ----------------------------------------------------------------------------------------------
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, stack
+from .support import fail, finite, row, stack
 from .exact_stance import decompression
 from .flight import liftoff_to_apex
 
@@ -95,7 +95,7 @@ def exact_decompression_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = exact_decompression(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = exact_decompression(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -187,4 +187,4 @@ def exact_decompression_apex_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = exact_decompression_apex(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = exact_decompression_apex(row(X, i), row(P, min(i, last)), row(OUT, i))

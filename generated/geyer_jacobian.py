@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:d030a00656e43f40
-#   flight_jacobian.py sha256:e2ee5667673d1914
+#   support.py sha256:e488e9166d8584f2
+#   flight_jacobian.py sha256:db6f0a14277c60c8
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, stack
+from .support import fail, finite, row, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 
@@ -478,7 +478,7 @@ def geyer_stance_jacobian_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = geyer_stance_jacobian(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = geyer_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -783,4 +783,4 @@ def geyer_apex_return_jacobian_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = geyer_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = geyer_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:d030a00656e43f40
+#   support.py sha256:e488e9166d8584f2
 #   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:bb01f902cd8eb450
+#   geyer.py sha256:b657d1f479a5a38a
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and apex-return
 kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, stack
+from .support import fail, finite, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -221,7 +221,7 @@ def gravity_type0_stance_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_stance(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = gravity_type0_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -381,7 +381,7 @@ def gravity_type0_state_at_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_state_at(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = gravity_type0_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -512,4 +512,4 @@ def gravity_type0_apex_return_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_apex_return(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = gravity_type0_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))

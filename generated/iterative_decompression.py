@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:d030a00656e43f40
+#   support.py sha256:e488e9166d8584f2
 #   flight.py sha256:a75b93d7de718e56
-#   iterative.py sha256:5228c8abc0385c9c
+#   iterative.py sha256:60690441fa8776b1
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, stack
+from .support import fail, finite, row, stack
 from .flight import liftoff_to_apex
 from .iterative import schwind_decompression
 
@@ -105,7 +105,7 @@ def iterative_decompression_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_decompression(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_decompression(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -205,4 +205,4 @@ def iterative_decompression_apex_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_decompression_apex(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_decompression_apex(row(X, i), row(P, min(i, last)), row(OUT, i))

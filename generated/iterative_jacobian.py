@@ -6,16 +6,16 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:d030a00656e43f40
-#   flight_jacobian.py sha256:e2ee5667673d1914
-#   geyer_jacobian.py sha256:4f6e2e8da6e5d9c0
-#   geyer_vs_jacobian.py sha256:6c6013e131d61a6b
-#   gravity_type0_jacobian.py sha256:068446da703aabc2
-#   gravity_type1_jacobian.py sha256:d4baf04a82644441
-#   gravity_type2_jacobian.py sha256:3b30aa09e51ff7d8
-#   gravity_type3_jacobian.py sha256:921b3e410815cc03
-#   gravity_type4_jacobian.py sha256:6357caaff500de54
-#   gravity_type5_jacobian.py sha256:5099f925652c43e2
+#   support.py sha256:e488e9166d8584f2
+#   flight_jacobian.py sha256:db6f0a14277c60c8
+#   geyer_jacobian.py sha256:ea642bd08dda35cd
+#   geyer_vs_jacobian.py sha256:35fa0982ca14954d
+#   gravity_type0_jacobian.py sha256:cf0bc080260f73dc
+#   gravity_type1_jacobian.py sha256:40fa08c351c84dd4
+#   gravity_type2_jacobian.py sha256:472ad5a89d8f6b9e
+#   gravity_type3_jacobian.py sha256:60ca56422b968097
+#   gravity_type4_jacobian.py sha256:bc612b34329964a1
+#   gravity_type5_jacobian.py sha256:589b2c8c47526cc4
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -25,7 +25,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, stack
+from .support import fail, finite, row, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian
@@ -1823,7 +1823,7 @@ def iterative_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
     OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_stance_jacobian_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2195,7 +2195,7 @@ def iterative_apex_return_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
     row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2270,7 +2270,7 @@ def iterative_stance_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
     OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_stance_jacobian_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2338,7 +2338,7 @@ def iterative_apex_return_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
     row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_apex_return_jacobian_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2418,7 +2418,8 @@ def iterative_stance_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type0(row(X, i), row(P, min(i, last)), row(OUT,
+            i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2486,7 +2487,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type0(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2566,7 +2568,8 @@ def iterative_stance_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type1(row(X, i), row(P, min(i, last)), row(OUT,
+            i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2634,7 +2637,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type1(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2714,7 +2718,8 @@ def iterative_stance_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type2(row(X, i), row(P, min(i, last)), row(OUT,
+            i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2782,7 +2787,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type2(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2862,7 +2868,8 @@ def iterative_stance_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type3(row(X, i), row(P, min(i, last)), row(OUT,
+            i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2930,7 +2937,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type3(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -3010,7 +3018,8 @@ def iterative_stance_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type4(row(X, i), row(P, min(i, last)), row(OUT,
+            i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -3078,7 +3087,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type4(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -3158,7 +3168,8 @@ def iterative_stance_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type5(row(X, i), row(P, min(i, last)), row(OUT,
+            i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -3226,7 +3237,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type5(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -3306,7 +3318,7 @@ def iterative_stance_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_stance_jacobian_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -3374,4 +3386,5 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_apex_return_jacobian_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT,
+            i)))

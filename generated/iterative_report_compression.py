@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:d030a00656e43f40
-#   geyer.py sha256:bb01f902cd8eb450
-#   geyer_vs.py sha256:207cbdd9c11fa5f8
-#   gravity_type0.py sha256:a4f1ad93cdadb8ec
-#   gravity_type1.py sha256:f3e86a5151d748d3
-#   gravity_type2.py sha256:84611e9555760f89
-#   gravity_type3.py sha256:227759d9dd9b2ed8
-#   gravity_type4.py sha256:a4d19db8e48997d7
-#   gravity_type5.py sha256:6174f366162af584
-#   iterative.py sha256:5228c8abc0385c9c
-#   iterative_report.py sha256:044653964adf3bda
+#   support.py sha256:e488e9166d8584f2
+#   geyer.py sha256:b657d1f479a5a38a
+#   geyer_vs.py sha256:db2c041fe5b87820
+#   gravity_type0.py sha256:4fb5ebfbef073b04
+#   gravity_type1.py sha256:4c3860fc5dd9b1e0
+#   gravity_type2.py sha256:f80d1e90364b6365
+#   gravity_type3.py sha256:ca638478172e9b72
+#   gravity_type4.py sha256:262252e497848a50
+#   gravity_type5.py sha256:c7e8d22fbcde535a
+#   iterative.py sha256:60690441fa8776b1
+#   iterative_report.py sha256:e643911d15da33c3
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -26,7 +26,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, stack
+from .support import fail, finite, row, stack
 from .geyer import geyer_stance
 from .geyer_vs import geyer_vs_stance
 from .gravity_type0 import gravity_type0_stance
@@ -139,7 +139,7 @@ def iterative_report_compression_zeroth_geyer_rows(X, P, OUT, STATUS):
     row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_report_compression_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -207,7 +207,7 @@ def iterative_report_compression_zeroth_held_rows(X, P, OUT, STATUS):
     row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_held(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_report_compression_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -279,7 +279,8 @@ def iterative_report_compression_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_report_compression_zeroth_gravity_type0(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -351,7 +352,8 @@ def iterative_report_compression_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_report_compression_zeroth_gravity_type1(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -423,7 +425,8 @@ def iterative_report_compression_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_report_compression_zeroth_gravity_type2(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -495,7 +498,8 @@ def iterative_report_compression_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_report_compression_zeroth_gravity_type3(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -567,7 +571,8 @@ def iterative_report_compression_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_report_compression_zeroth_gravity_type4(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -639,7 +644,8 @@ def iterative_report_compression_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = (iterative_report_compression_zeroth_gravity_type5(row(X, i), row(P, min(i, last)),
+            row(OUT, i)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -711,4 +717,4 @@ def iterative_report_compression_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_compression_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = iterative_report_compression_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))

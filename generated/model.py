@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:d030a00656e43f40
+#   support.py sha256:e488e9166d8584f2
 #   flight.py sha256:a75b93d7de718e56
-#   geyer_vs.py sha256:207cbdd9c11fa5f8
+#   geyer_vs.py sha256:db2c041fe5b87820
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, stack
+from .support import fail, finite, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer_vs import bottom_quartic
 from .slip_model import (cartesian_to_polar, max_step, polar_to_cartesian, stance_cartesian_rhs,
@@ -83,7 +83,7 @@ def apex_to_touchdown_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = apex_to_touchdown_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = apex_to_touchdown_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -132,7 +132,7 @@ def liftoff_to_apex_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = liftoff_to_apex_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = liftoff_to_apex_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -177,7 +177,7 @@ def stance_polar_rhs_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = stance_polar_rhs_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = stance_polar_rhs_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -222,7 +222,7 @@ def stance_cartesian_rhs_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = stance_cartesian_rhs_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = stance_cartesian_rhs_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -260,7 +260,7 @@ def stance_energy_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = stance_energy_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = stance_energy_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -305,7 +305,7 @@ def polar_to_cartesian_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = polar_to_cartesian_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = polar_to_cartesian_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -350,7 +350,7 @@ def cartesian_to_polar_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = cartesian_to_polar_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = cartesian_to_polar_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -386,7 +386,7 @@ def max_step_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = max_step_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = max_step_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -423,7 +423,7 @@ def stance_time_limit_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = stance_time_limit_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = stance_time_limit_entry(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -463,4 +463,4 @@ def bottom_quartic_entry_rows(X, P, OUT, STATUS):
     STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
-        STATUS[i] = bottom_quartic_entry(X[i], P[min(i, last)], OUT[i])
+        STATUS[i] = bottom_quartic_entry(row(X, i), row(P, min(i, last)), row(OUT, i))

@@ -13,6 +13,10 @@ on a kernel's stack, a row's store and its checks.
   the kernel that writes it: the arguments and outputs a kernel passes through an array (a role
   kernel's ``x``, ``p`` and ``out``, a call with more than 16 of them; derive/lower.py) cost no
   allocation. Valid until that kernel returns; never returned or kept.
+- ``row(A, i)``: row ``i`` of a 2-D float64 array as a 1-D array that borrows ``A``'s memory, without
+  a reference count: what a batch form hands its role kernel for ``X[i]``, ``P[i]`` and ``OUT[i]``
+  (an ``A[i]`` view increments and decrements ``A``'s count, atomically, on every row). Valid while
+  ``A`` is: never returned or kept.
 - ``fail(out, status)``: ``out`` all NaN; returns ``status`` (a failed row).
 - ``finite(out)``: every entry of ``out`` finite.
 """
@@ -36,6 +40,35 @@ def stack(typingctx, n):
         return cgutils.alloca_once(builder, context.get_value_type(types.float64), size=size)
 
     return types.CPointer(types.float64)(n), codegen
+
+
+@intrinsic
+def row(typingctx, A, i):
+    """Row ``i`` of the 2-D float array ``A`` as a 1-D array of the same memory and no meminfo (the
+    module docstring); C-contiguous when ``A`` is. ``i`` is not checked: the caller's loop bounds it."""
+    if not (isinstance(A, types.Array) and A.ndim == 2 and isinstance(A.dtype, types.Float)):
+        return None
+    if not isinstance(i, types.Integer):
+        return None
+    rowty = types.Array(A.dtype, 1, "C" if A.layout == "C" else "A")
+
+    def codegen(context, builder, signature, args):
+        aryty = signature.args[0]
+        ary = context.make_array(aryty)(context, builder, args[0])
+        shape = cgutils.unpack_tuple(builder, ary.shape, 2)
+        strides = cgutils.unpack_tuple(builder, ary.strides, 2)
+        index = context.cast(builder, args[1], signature.args[1], types.intp)
+        first = [index, context.get_constant(types.intp, 0)]
+        ptr = cgutils.get_item_pointer2(context, builder, ary.data, shape, strides, aryty.layout, first)
+        out = context.make_array(rowty)(context, builder)
+        size = context.get_abi_sizeof(context.get_data_type(aryty.dtype))
+        itemsize = context.get_constant(types.intp, size)
+        context.populate_array(
+            out, data=ptr, shape=[shape[1]], strides=[strides[1]], itemsize=itemsize, meminfo=None
+        )
+        return out._getvalue()
+
+    return rowty(A, i), codegen
 
 
 @intrinsic

@@ -402,3 +402,45 @@ def test_run_blocks_does_not_remember_a_row_cost_measured_while_the_kernel_compi
     batch.run_blocks(block, 100, key)
     assert key in batch._COST
     batch._COST.pop(key)
+
+
+def test_support_row_borrows_a_row_of_a_contiguous_or_strided_array():
+    """generated/support.py's ``row(A, i)``: row ``i`` of ``A`` (C-contiguous or strided) as a 1-D
+    array on the same memory: what it reads is ``A[i]``, what it writes lands in ``A``."""
+    from numba import njit
+    from slipmaps.generated import support
+
+    @njit
+    def double_row(A, i):  # row is an intrinsic: callable from compiled code only
+        r = support.row(A, i)
+        for j in range(r.shape[0]):
+            r[j] *= 2.0
+        return r.shape[0]
+
+    base = np.arange(24.0).reshape(4, 6)
+    for A in (base.copy(), np.asfortranarray(base), base.copy()[:, ::2], base.copy()[::-1]):
+        want = A.copy()
+        want[2] *= 2.0
+        assert double_row(A, 2) == A.shape[1]
+        assert np.array_equal(A, want), A
+
+
+def test_batch_rows_of_strided_inputs_equal_contiguous_ones():
+    """A role kernel's batch form borrows its rows (support.row) from whatever layout it is given:
+    a Fortran-ordered ``X`` and a strided ``OUT`` give the rows of contiguous arrays."""
+    from slipmaps.runtime.api.calls import Call, kernel_functions
+
+    call = Call.of("geyer", slipmaps.HUMAN_RUNNER, {})
+    spec = call.spec("apex_return")
+    rows = kernel_functions(spec)[1]
+    rng = np.random.default_rng(3)
+    X = np.zeros((50, len(spec.x)))
+    for name, (lo, hi) in {"b_y_apex": (1.0, 1.1), "b_xd_apex": (3, 7), "q_th_td": (0.3, 0.5)}.items():
+        X[:, spec.x.index(name)] = rng.uniform(lo, hi, 50)
+    P = call.record(spec, rows=True)
+    out, status = np.empty((50, spec.width)), np.empty(50, dtype=np.int64)
+    rows(X, P, out, status)
+    wide, strided_status = np.full((50, 2 * spec.width), -1.0), np.empty(50, dtype=np.int64)
+    rows(np.asfortranarray(X), np.asfortranarray(P), wide[:, ::2], strided_status)
+    assert (status == 0).sum() > 40 and np.array_equal(status, strided_status)
+    assert np.array_equal(out, wide[:, ::2], equal_nan=True) and (wide[:, 1::2] == -1.0).all()
