@@ -357,6 +357,9 @@ class Kernel:
     #: Inline into every caller at numba's IR level (``njit(inline="always")``): a map's stance kernel
     #: when its MapSpec opts in (``MapSpec.inline``), so its batch loop runs straight-line code.
     inline: bool = False
+    #: A role kernel inlined at numba's IR level into its own batch form only (``support.into_rows``):
+    #: the kernels of a map whose MapSpec opts in (``MapSpec.inline``) and their Jacobians.
+    inline_rows: bool = False
     #: Arguments and outputs the finiteness checks leave out: a derivative kernel's directions and
     #: derivatives (a non-finite derivative is NUMERICAL_RANGE for the public API, runtime/api/jacobian.py,
     #: when the Jacobian returns it; one of an output nothing uses must not fail a caller).

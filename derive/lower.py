@@ -943,6 +943,7 @@ def lower(kernel: Kernel) -> dict:
         "status": kernel.status,
         "check_outputs": kernel.check_outputs,
         "inline": kernel.inline,
+        "inline_rows": kernel.inline_rows,
         "tail": bool(tails),
         "ops": int(ctx.ops),
         "callees": sorted(ctx.callees),

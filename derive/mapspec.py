@@ -59,9 +59,11 @@ class MapSpec(Declaration):
     build: Callable[[MapInputs], MapBuild]
     requires: tuple[str, ...] = ()
     notes: str = ""
-    #: Inline the stance kernel into its batch and apex-return kernels (numba IR inlining): 10-25 %
-    #: faster batches for a small body, but every caller compiles it again (measured: 2-3x the
-    #: compile time of the gravity maps' large, iterating bodies), so a map opts in.
+    #: Inline the stance kernel into its batch and apex-return kernels, and every role kernel of the
+    #: map (and its Jacobians) into its own batch form (numba IR inlining): faster batches for a small
+    #: body (Geyer's apex return 137 -> 130 ns a row), but every caller compiles it again (the
+    #: warm-up of every map's batch forms took 137 -> 219 s; 2-3x the compile time of the gravity
+    #: maps' large, iterating bodies), so a map opts in.
     inline: bool = False
     #: Statuses the approximation itself returns on gaits the exact stance completes (for example
     #: IMAGINARY_MOMENTUM where an iterate's H^{-1} of (33) is imaginary); listed in docs/maps.md.
@@ -129,6 +131,7 @@ class MapSpec(Declaration):
             notes=self.notes,
             module=self.ident,
             inline=self.inline,
+            inline_rows=self.inline,
         )
         return self._cache["stance"]
 
@@ -165,6 +168,7 @@ class MapSpec(Declaration):
                 outputs=catalog.TRAJECTORY,
                 layout=self.layout((t,) + catalog.TOUCHDOWN),
                 module=self.ident,
+                inline_rows=self.inline,
             ),
             self._choice(choice),
         )
@@ -239,6 +243,7 @@ class MapSpec(Declaration):
                 outputs=catalog.APEX_RETURN + Group("", self.extras),
                 layout=self.layout(catalog.APEX_ARGS),
                 module=self.ident,
+                inline_rows=self.inline,
             ),
             self._choice(choice),
         )

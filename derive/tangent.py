@@ -383,6 +383,7 @@ class Differentiator:
             module=module,
             check_inputs=kernel.check_inputs,
             check_outputs=check,
+            inline_rows=kernel.inline_rows and layout is not None,
             unchecked=tuple(a.name for a in extra) + tuple(f.name for f in fields),
             doc_returns=values + (block,),
         )

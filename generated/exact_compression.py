@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e488e9166d8584f2
+#   support.py sha256:0785c1d97f2e37cd
 #   exact_stance.py sha256:299560de25340ae1
 # ----------------------------------------------------------------------------------------------
 """Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, row, stack
+from .support import fail, finite, into_rows, row, stack
 from .exact_stance import compression
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may

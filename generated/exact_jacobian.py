@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e488e9166d8584f2
+#   support.py sha256:0785c1d97f2e37cd
 #   exact_stance.py sha256:299560de25340ae1
-#   flight_jacobian.py sha256:db6f0a14277c60c8
+#   flight_jacobian.py sha256:d198857529469138
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, row, stack
+from .support import fail, finite, into_rows, row, stack
 from .exact_stance import stance_jacobian
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd)

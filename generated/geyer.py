@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e488e9166d8584f2
+#   support.py sha256:0785c1d97f2e37cd
 #   flight.py sha256:a75b93d7de718e56
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, row, stack
+from .support import fail, finite, into_rows, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -274,7 +274,7 @@ def geyer_stance_rows(X, P, OUT, STATUS):
         STATUS[i] = geyer_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline=into_rows)
 def geyer_state_at(x, p, out):
     """Geyer et al.'s approximate stance map: the polar state a time t after touchdown.
 
@@ -347,7 +347,7 @@ def geyer_state_at_rows(X, P, OUT, STATUS):
         STATUS[i] = geyer_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline=into_rows)
 def geyer_apex_return(x, p, out):
     """Apex-return map: exact flights, stance by Geyer et al.'s approximate stance map.
 

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e488e9166d8584f2
-#   flight_jacobian.py sha256:db6f0a14277c60c8
+#   support.py sha256:0785c1d97f2e37cd
+#   flight_jacobian.py sha256:d198857529469138
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, row, stack
+from .support import fail, finite, into_rows, row, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 
@@ -219,7 +219,7 @@ def geyer_liftoff_phase_jac_a_b(a, b, l0, q_r_lo):
     return (phase_lo, s_lo, d_phase_lo__a, d_phase_lo__b, d_s_lo__a, d_s_lo__b, STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline=into_rows)
 def geyer_stance_jacobian(x, p, out):
     """Geyer et al.'s approximate stance map: stance outputs and their derivatives with respect to the
     touchdown state and the stiffness.
@@ -481,7 +481,7 @@ def geyer_stance_jacobian_rows(X, P, OUT, STATUS):
         STATUS[i] = geyer_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline=into_rows)
 def geyer_apex_return_jacobian(x, p, out):
     """Apex-return map by Geyer et al.'s approximate stance map, and its derivatives with respect to the apex,
     the touchdown angle and the stiffness.

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e488e9166d8584f2
+#   support.py sha256:0785c1d97f2e37cd
 #   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:b657d1f479a5a38a
+#   geyer.py sha256:7df96c1a73aec019
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and apex-return
 kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, row, stack
+from .support import fail, finite, into_rows, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 

@@ -6,16 +6,16 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e488e9166d8584f2
+#   support.py sha256:0785c1d97f2e37cd
 #   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:b657d1f479a5a38a
-#   geyer_vs.py sha256:db2c041fe5b87820
-#   gravity_type0.py sha256:4fb5ebfbef073b04
-#   gravity_type1.py sha256:4c3860fc5dd9b1e0
-#   gravity_type2.py sha256:f80d1e90364b6365
-#   gravity_type3.py sha256:ca638478172e9b72
-#   gravity_type4.py sha256:262252e497848a50
-#   gravity_type5.py sha256:c7e8d22fbcde535a
+#   geyer.py sha256:7df96c1a73aec019
+#   geyer_vs.py sha256:dd1c80793ba31b45
+#   gravity_type0.py sha256:806206cb4f24fec7
+#   gravity_type1.py sha256:c108834fd5549bd1
+#   gravity_type2.py sha256:2083757beaeeaa3b
+#   gravity_type3.py sha256:00ee8a04d54e06f7
+#   gravity_type4.py sha256:dad791ea8a7c0800
+#   gravity_type5.py sha256:d8e6592fb46e45b2
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -25,7 +25,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, row, stack
+from .support import fail, finite, into_rows, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
 from .geyer_vs import geyer_vs_stance

@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:e488e9166d8584f2
-#   flight_jacobian.py sha256:db6f0a14277c60c8
-#   geyer_jacobian.py sha256:ea642bd08dda35cd
-#   geyer_vs_jacobian.py sha256:35fa0982ca14954d
-#   gravity_type0_jacobian.py sha256:cf0bc080260f73dc
-#   gravity_type1_jacobian.py sha256:40fa08c351c84dd4
-#   gravity_type2_jacobian.py sha256:472ad5a89d8f6b9e
-#   gravity_type3_jacobian.py sha256:60ca56422b968097
-#   gravity_type4_jacobian.py sha256:bc612b34329964a1
-#   gravity_type5_jacobian.py sha256:589b2c8c47526cc4
-#   iterative_jacobian.py sha256:cc79fb56241e553c
+#   support.py sha256:0785c1d97f2e37cd
+#   flight_jacobian.py sha256:d198857529469138
+#   geyer_jacobian.py sha256:8658f863a532c16c
+#   geyer_vs_jacobian.py sha256:bcd435f82a9f639a
+#   gravity_type0_jacobian.py sha256:5792ceafd8859c67
+#   gravity_type1_jacobian.py sha256:aefabf4faabf685e
+#   gravity_type2_jacobian.py sha256:6216e0d28f95dea7
+#   gravity_type3_jacobian.py sha256:84f96f1dc85f882a
+#   gravity_type4_jacobian.py sha256:50f0a1e7b98a8731
+#   gravity_type5_jacobian.py sha256:dbe876a5fdd25e9f
+#   iterative_jacobian.py sha256:cb333e25b44f23e6
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -26,7 +26,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, row, stack
+from .support import fail, finite, into_rows, row, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian

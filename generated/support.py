@@ -18,6 +18,8 @@ on a kernel's stack, a row's store and its checks.
   (an ``A[i]`` view increments and decrements ``A``'s count, atomically, on every row). Valid while
   ``A`` is: never returned or kept.
 - ``fail(out, status)``: ``out`` all NaN; returns ``status`` (a failed row).
+- ``into_rows``: numba's inline cost model of a role kernel: its body is inlined into its own batch
+  form only.
 - ``finite(out)``: every entry of ``out`` finite.
 """
 
@@ -40,6 +42,15 @@ def stack(typingctx, n):
         return cgutils.alloca_once(builder, context.get_value_type(types.float64), size=size)
 
     return types.CPointer(types.float64)(n), codegen
+
+
+def into_rows(expr, caller, callee):
+    """numba's inline cost model of a role kernel (``njit(inline=into_rows)``): inlined at numba's IR
+    level into its own batch form ``<kernel>_rows`` only, whose loop then runs the kernel's body
+    without a call (Geyer's apex return: 133 -> 125 ns a row from numba's cache); every other caller
+    calls it. A first batch then compiles the body once, inside the loop; a first scalar call compiles
+    the kernel alone."""
+    return caller.func_id.func_name == callee.func_id.func_name + "_rows"
 
 
 @intrinsic

@@ -444,3 +444,19 @@ def test_batch_rows_of_strided_inputs_equal_contiguous_ones():
     rows(np.asfortranarray(X), np.asfortranarray(P), wide[:, ::2], strided_status)
     assert (status == 0).sum() > 40 and np.array_equal(status, strided_status)
     assert np.array_equal(out, wide[:, ::2], equal_nan=True) and (wide[:, 1::2] == -1.0).all()
+
+
+def test_into_rows_inlines_a_role_kernel_into_its_own_batch_form_only():
+    """generated/support.py's ``into_rows``, numba's inline cost model of the role kernels of a map
+    that opts in (MapSpec.inline): yes for ``<kernel>_rows``, no for any other caller; geyer opts in."""
+    from types import SimpleNamespace
+
+    from slipmaps.generated import geyer, support
+
+    def ir(name):
+        return SimpleNamespace(func_id=SimpleNamespace(func_name=name))
+
+    assert support.into_rows(None, ir("geyer_apex_return_rows"), ir("geyer_apex_return"))
+    assert not support.into_rows(None, ir("geyer_apex_return_jacobian"), ir("geyer_apex_return"))
+    assert not support.into_rows(None, ir("rows"), ir("geyer_apex_return"))
+    assert geyer.geyer_apex_return.targetoptions["inline"] is support.into_rows
