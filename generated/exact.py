@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:0785c1d97f2e37cd
+#   support.py sha256:a780b0f04af231ea
 #   exact_stance.py sha256:299560de25340ae1
 #   flight.py sha256:a75b93d7de718e56
 # ----------------------------------------------------------------------------------------------

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:0785c1d97f2e37cd
-#   flight_jacobian.py sha256:d198857529469138
+#   support.py sha256:a780b0f04af231ea
+#   flight_jacobian.py sha256:5ec21cb42010f035
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
 its stance and apex-return Jacobians."""

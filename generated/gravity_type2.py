@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:0785c1d97f2e37cd
+#   support.py sha256:a780b0f04af231ea
 #   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:7df96c1a73aec019
+#   geyer.py sha256:2033d878e51bc99b
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return
 kernels."""

@@ -6,16 +6,16 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:0785c1d97f2e37cd
-#   geyer.py sha256:7df96c1a73aec019
-#   geyer_vs.py sha256:dd1c80793ba31b45
-#   gravity_type0.py sha256:806206cb4f24fec7
-#   gravity_type1.py sha256:c108834fd5549bd1
-#   gravity_type2.py sha256:2083757beaeeaa3b
-#   gravity_type3.py sha256:00ee8a04d54e06f7
-#   gravity_type4.py sha256:dad791ea8a7c0800
-#   gravity_type5.py sha256:d8e6592fb46e45b2
-#   iterative.py sha256:60ff143f87031a4f
+#   support.py sha256:a780b0f04af231ea
+#   geyer.py sha256:2033d878e51bc99b
+#   geyer_vs.py sha256:9bab41fe9df4a8d5
+#   gravity_type0.py sha256:625965ae4cdd4525
+#   gravity_type1.py sha256:b8fb15349aacb309
+#   gravity_type2.py sha256:3c44203b07ea1e1c
+#   gravity_type3.py sha256:9c910c74e6d9af90
+#   gravity_type4.py sha256:bf4149137218a5c6
+#   gravity_type5.py sha256:76191d383cef2130
+#   iterative.py sha256:4193daee19f97b21
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:0785c1d97f2e37cd
+#   support.py sha256:a780b0f04af231ea
 #   flight.py sha256:a75b93d7de718e56
-#   iterative.py sha256:60ff143f87031a4f
+#   iterative.py sha256:4193daee19f97b21
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

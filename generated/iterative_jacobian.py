@@ -6,16 +6,16 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:0785c1d97f2e37cd
-#   flight_jacobian.py sha256:d198857529469138
-#   geyer_jacobian.py sha256:8658f863a532c16c
-#   geyer_vs_jacobian.py sha256:bcd435f82a9f639a
-#   gravity_type0_jacobian.py sha256:5792ceafd8859c67
-#   gravity_type1_jacobian.py sha256:aefabf4faabf685e
-#   gravity_type2_jacobian.py sha256:6216e0d28f95dea7
-#   gravity_type3_jacobian.py sha256:84f96f1dc85f882a
-#   gravity_type4_jacobian.py sha256:50f0a1e7b98a8731
-#   gravity_type5_jacobian.py sha256:dbe876a5fdd25e9f
+#   support.py sha256:a780b0f04af231ea
+#   flight_jacobian.py sha256:5ec21cb42010f035
+#   geyer_jacobian.py sha256:a894bc5b6caa73d4
+#   geyer_vs_jacobian.py sha256:bf6dd42e49d712fa
+#   gravity_type0_jacobian.py sha256:870c61a53e2d9720
+#   gravity_type1_jacobian.py sha256:b561a9048ce62477
+#   gravity_type2_jacobian.py sha256:852a2e3caf6c6ab0
+#   gravity_type3_jacobian.py sha256:37b69cbb74eda0fa
+#   gravity_type4_jacobian.py sha256:e40c8527b3897242
+#   gravity_type5_jacobian.py sha256:4a8ed88c135b0a26
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:0785c1d97f2e37cd
+#   support.py sha256:a780b0f04af231ea
 #   flight.py sha256:a75b93d7de718e56
-#   geyer_vs.py sha256:dd1c80793ba31b45
+#   geyer_vs.py sha256:9bab41fe9df4a8d5
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""

@@ -47,7 +47,7 @@ def stack(typingctx, n):
 def into_rows(expr, caller, callee):
     """numba's inline cost model of a role kernel (``njit(inline=into_rows)``): inlined at numba's IR
     level into its own batch form ``<kernel>_rows`` only, whose loop then runs the kernel's body
-    without a call (Geyer's apex return: 133 -> 125 ns a row from numba's cache); every other caller
+    without a call (Geyer's apex return: 137 -> 130 ns a row from numba's cache); every other caller
     calls it. A first batch then compiles the body once, inside the loop; a first scalar call compiles
     the kernel alone."""
     return caller.func_id.func_name == callee.func_id.func_name + "_rows"

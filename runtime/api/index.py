@@ -74,8 +74,8 @@ class KernelSpec:
 
     @cached_property
     def record_only(self) -> frozenset[str]:
-        """The names of the parameter record that are not inputs: a batch's per-row arrays of these
-        make a record per row (:func:`~.calls.layout_rows`)."""
+        """Names of the parameter record that are not inputs; a batch's per-row arrays of these
+        make a record per row (``layout_rows`` of runtime/api/calls.py)."""
         return frozenset(self.p) - frozenset(self.x)
 
     @property

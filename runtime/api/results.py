@@ -56,7 +56,7 @@ class Result:
     @classmethod
     def of(
         cls, map: str, kind: str, status: Status, message: str, values: Mapping, inputs: Mapping
-    ) -> Result:  # noqa: A002
+    ) -> Result:
         """``Result(map, kind, status, message, values, inputs)`` in a third of the time: the frozen
         dataclass's ``__init__`` sets each field through ``object.__setattr__`` (0.9 us a result; a
         scalar call makes one)."""
