@@ -250,7 +250,7 @@ def kernel_seconds(info, h, v, th, repeat: int) -> tuple[float, float]:
     for role in ("apex_return", "apex_return_jacobian"):
         spec = call.spec(role)
         kern = kernel_functions(spec)[0]
-        X, p = layout_rows(spec, call.record(spec), rows, defaults, len(h))
+        X, p = layout_rows(spec, call.record(spec, rows=True), rows, defaults, len(h))
         res = np.empty(spec.width)
         _kernel_loop(kern, X[:10], p[0], res)
         best = math.inf

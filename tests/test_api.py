@@ -460,3 +460,17 @@ def test_into_rows_inlines_a_role_kernel_into_its_own_batch_form_only():
     assert not support.into_rows(None, ir("geyer_apex_return_jacobian"), ir("geyer_apex_return"))
     assert not support.into_rows(None, ir("rows"), ir("geyer_apex_return"))
     assert geyer.geyer_apex_return.targetoptions["inline"] is support.into_rows
+
+
+def test_layout_rows_takes_the_record_flat_or_as_its_batch_view():
+    """``layout_rows`` hands the batch form a (1, k) ``P`` whether it is given the parameter record
+    or its (1, k) view (``Call.record(spec, rows=True)``, made once per call)."""
+    from slipmaps.runtime.api.calls import Call, layout_rows
+
+    call = Call.of("geyer", slipmaps.HUMAN_RUNNER, {})
+    spec = call.spec("apex_return")
+    rows = {"b_y_apex": np.ones(3), "b_xd_apex": np.full(3, 5.0), "q_th_td": np.full(3, 0.35)}
+    inputs = {"ground": 0.0, "retraction_rate": 0.0}
+    flat = layout_rows(spec, call.record(spec), rows, inputs, 3)[1]
+    view = layout_rows(spec, call.record(spec, rows=True), rows, inputs, 3)[1]
+    assert flat.shape == view.shape == (1, len(spec.p)) and np.array_equal(flat, view)

@@ -97,10 +97,13 @@ class Columns(dict):
 
 def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int):
     """``(X, P)`` of ``n`` rows of a role kernel: ``X`` (n, len(x)) its inputs by name from the
-    per-row arrays ``rows`` or the per-call ``inputs``; ``P`` the parameter ``record`` (1, k) as it is, or
+    per-row arrays ``rows`` or the per-call ``inputs``; ``P`` the parameter ``record`` as a (1, k)
+    array (``Call.record(spec, rows=True)`` is handed on as it is; a 1-D record is viewed so), or
     one per row (n, k) when ``rows`` also holds a parameter (a plant's stiffness per run). A record
     field that is also an input (the stance's touchdown leg length ``q_r_td``) is not one: a role
     kernel reads it from ``x`` (derive/lower.py unpacks from ``p`` only the names ``x`` lacks)."""
+    if record.ndim == 1:
+        record = record[None, :]
     if isinstance(rows, Columns) and rows.names == tuple(spec.x):
         X = np.ascontiguousarray(rows.matrix, dtype=np.float64)  # read only by the kernel
     elif n == 1:  # one row from a list: a column assignment per input costs more than the row
