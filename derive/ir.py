@@ -142,6 +142,11 @@ class Stage:
     guards: tuple[Guard, ...] = ()
     comment: str = ""
     opaque: tuple[str, ...] = ()
+    #: Inputs that are exactly 0 wherever the stage runs (a branch taken on that): the generated
+    #: code evaluates its assignments at 0, after derive/tangent.py has differentiated them, so a
+    #: first-order term in such an input gives its derivative and costs the values nothing (a leg
+    #: held still, derive/model/flight.py).
+    zero: tuple[sp.Symbol, ...] = ()
 
 
 @dataclass(frozen=True)

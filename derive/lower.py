@@ -201,10 +201,11 @@ def _lower_stage(ctx: _Ctx, stage: Stage, idx: str) -> list[dict]:
     # an earlier one of the same stage gets it inlined (CSE then shares it again). With opaque names
     # each temporary comes just before the first assignment that needs it instead.
     opaque = set(stage.opaque)
+    zero = dict.fromkeys(stage.zero, sp.S.Zero)
     exprs: list[sp.Basic] = []
     earlier: dict[str, sp.Basic] = {}
     for n, (_, expr) in zip(names, stage.assignments, strict=True):
-        expr = sp.sympify(expr)
+        expr = sp.sympify(expr).xreplace(zero) if zero else sp.sympify(expr)
         inner = {s: earlier[s.name] for s in expr.free_symbols if s.name in earlier}
         exprs.append(expr.xreplace(inner) if inner else expr)
         if n not in opaque:

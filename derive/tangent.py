@@ -657,7 +657,7 @@ class _Ctx:
         for values, tangents in self.parts(st):
             assigns += values + tangents
             opaque += [p.name for p, _ in values[1:]] + [t.name for t, _ in tangents]
-        return Stage(tuple(assigns), st.guards, st.comment, opaque=tuple(opaque))
+        return Stage(tuple(assigns), st.guards, st.comment, opaque=tuple(opaque), zero=st.zero)
 
     def split(self, steps) -> tuple[list, list]:
         """Generic direction: the steps' values (stages with their partial derivatives, calls of the
@@ -668,11 +668,18 @@ class _Ctx:
                 groups = self.parts(step)
                 vals = [a for v, _ in groups for a in v]
                 partial_names = tuple(p.name for v, _ in groups for p, _ in v[1:])
-                values.append(Stage(tuple(vals), step.guards, step.comment, opaque=partial_names))
+                values.append(
+                    Stage(tuple(vals), step.guards, step.comment, opaque=partial_names, zero=step.zero)
+                )
                 assigns = tuple(a for _, t in groups for a in t)
                 if assigns:
                     tangents.append(
-                        Stage(assigns, comment=step.comment, opaque=tuple(s.name for s, _ in assigns))
+                        Stage(
+                            assigns,
+                            comment=step.comment,
+                            opaque=tuple(s.name for s, _ in assigns),
+                            zero=step.zero,
+                        )
                     )
             elif isinstance(step, Call):
                 for part in self.call(step):

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
 #   exact_stance.py sha256:299560de25340ae1
-#   flight.py sha256:a75b93d7de718e56
+#   flight.py sha256:4670e2b1039b4330
 # ----------------------------------------------------------------------------------------------
 """Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return
 kernels."""

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
 #   exact_stance.py sha256:299560de25340ae1
-#   flight.py sha256:a75b93d7de718e56
+#   flight.py sha256:4670e2b1039b4330
 # ----------------------------------------------------------------------------------------------
 """Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom ->
 liftoff."""

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
 #   exact_stance.py sha256:299560de25340ae1
-#   flight_jacobian.py sha256:5ec21cb42010f035
+#   flight_jacobian.py sha256:c3faa38d4ef1759a
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""

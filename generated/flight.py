@@ -52,7 +52,7 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
         foot_x: horizontal position of the toe at touchdown relative to the apex [m]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 74
+    # Total ops: 63
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground)
@@ -72,29 +72,25 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
     swinging = ((0.0) if (retraction_rate == 0.0) else (1.0))
     # the touchdown time: closed form for a leg held still, else Newton's method
     if swinging == 0.0:
-        # t0 with its first-order term in the rate (the rate's derivative; t0 itself here, as Newton's method
-        # from t0 gives bit for bit); no pass; the touchdown angle's sine and cosine likewise: those of
-        # q_th_td, with their derivatives
-        _x0 = math.sin(q_th_td)
-        _x1 = _x0*q_r_td*retraction_rate/g_f + t0
-        _x2 = math.cos(q_th_td)
-        _x3 = retraction_rate*t0
-        t_td = _x1
+        # t0 with its first-order term in the rate (its derivative; the rate is 0 here, so the values are t0
+        # and q_th_td's, as Newton's method from t0 gives bit for bit); no pass; the touchdown angle's sine
+        # and cosine: those of q_th_td
+        t_td = t0
         t_start = t0
         t_far = t0
         foot_slope = -g_f*t0
         touchdown_passes = 0.0
-        touchdown_angle = _x1*retraction_rate + q_th_td
-        sin_td = _x0 + _x2*_x3
-        cos_td = -_x0*_x3 + _x2
+        touchdown_angle = q_th_td
+        sin_td = math.sin(q_th_td)
+        cos_td = math.cos(q_th_td)
     elif swinging == 1.0:
         # a start at or after the touchdown: t0 if the foot is on or below the ground then, else the time the
         # body is q_r_td below the ground
-        _x4 = 2.0*q_r_td
-        _x5 = math.cos(q_th_td)
-        _x6 = math.sqrt(_x4*_x5 + _x4 + 2.0*drop)/math.sqrt(g_f)
-        t_far = _x6
-        t_start = ((t0) if (q_r_td*(_x5 - math.cos(q_th_td + retraction_rate*t0)) <= 0.0) else (_x6))
+        _x0 = 2.0*q_r_td
+        _x1 = math.cos(q_th_td)
+        _x2 = math.sqrt(_x0*_x1 + _x0 + 2.0*drop)/math.sqrt(g_f)
+        t_far = _x2
+        t_start = ((t0) if (q_r_td*(_x1 - math.cos(q_th_td + retraction_rate*t0)) <= 0.0) else (_x2))
         # Newton's method on the foot's height (concave: monotone from the right)
         t_td = t_start
         touchdown_passes = 0.0
@@ -105,8 +101,8 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
         for _it0 in range(_last0 + 1):
             if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and touchdown_passes > 0.0:
                 return _NAN6 + (STATUS_NOT_CONVERGED,)
-            _x7 = (0.5)*g_f
-            foot_slope = (_x7*(t0 - t_td) - _x7*(t0 + t_td) + q_r_td*retraction_rate*math.sin(q_th_td
+            _x3 = (0.5)*g_f
+            foot_slope = (_x3*(t0 - t_td) - _x3*(t0 + t_td) + q_r_td*retraction_rate*math.sin(q_th_td
                 + retraction_rate*t_td))
             # the foot descends toward the ground
             if not ((foot_slope < 0.0)):
@@ -121,10 +117,10 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
             t_td = _n0_0
             touchdown_passes += 1.0
         # the leg angle at touchdown, its sine and cosine
-        _x8 = q_th_td + retraction_rate*t_td
-        touchdown_angle = _x8
-        sin_td = math.sin(_x8)
-        cos_td = math.cos(_x8)
+        _x4 = q_th_td + retraction_rate*t_td
+        touchdown_angle = _x4
+        sin_td = math.sin(_x4)
+        cos_td = math.cos(_x4)
     else:
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # the leg above the horizontal

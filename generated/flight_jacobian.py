@@ -39,63 +39,53 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_0(_p
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 42
-    # t0 with its first-order term in the rate (the rate's derivative; t0 itself here, as Newton's method from
-    # t0 gives bit for bit); no pass; the touchdown angle's sine and cosine likewise: those of q_th_td, with
-    # their derivatives
+    # Total ops: 22
+    # t0 with its first-order term in the rate (its derivative; the rate is 0 here, so the values are t0 and
+    # q_th_td's, as Newton's method from t0 gives bit for bit); no pass; the touchdown angle's sine and
+    # cosine: those of q_th_td
+    t_td = t0
+    d_t_td__q_th_td = d_t0__q_th_td
     _x0 = math.sin(q_th_td)
-    _x1 = _x0*retraction_rate
-    _x2 = q_r_td/g_f
-    _x3 = _x1*_x2 + t0
-    t_td = _x3
-    _x4 = math.cos(q_th_td)
-    _x5 = _x4*retraction_rate
-    d_t_td__q_th_td = _x2*_x5 + d_t0__q_th_td
-    d_t_td__retraction_rate = _x0*_x2
+    d_t_td__retraction_rate = _x0*q_r_td/g_f
     t_start = t0
     t_far = t0
     foot_slope = -g_f*t0
-    _x6 = _pd__0*g_f
-    d_foot_slope__b_y_apex = -_x6
+    _x1 = _pd__0*g_f
+    d_foot_slope__b_y_apex = -_x1
     d_foot_slope__q_th_td = -d_t0__q_th_td*g_f
-    d_foot_slope__ground = _x6
-    touchdown_angle = _x3*retraction_rate + q_th_td
-    _x7 = _pd__0*retraction_rate
-    d_touchdown_angle__b_y_apex = _x7
-    d_touchdown_angle__q_th_td = d_t_td__q_th_td*retraction_rate + 1.0
-    d_touchdown_angle__ground = -_x7
-    d_touchdown_angle__retraction_rate = _x3 + d_t_td__retraction_rate*retraction_rate
-    _x8 = _x0 + _x5*t0
-    sin_td = _x8
-    _pd__1 = _x5
-    _x9 = _pd__0*_pd__1
-    d_sin_td__b_y_apex = _x9
-    _x10 = _x1*t0
-    d_sin_td__q_th_td = _pd__1*d_t0__q_th_td - _x10 + _x4
-    d_sin_td__ground = -_x9
-    d_sin_td__retraction_rate = _x4*t0
-    cos_td = -_x10 + _x4
-    _pd__2 = -_x1
-    _x11 = _pd__0*_pd__2
-    d_cos_td__b_y_apex = _x11
-    d_cos_td__q_th_td = _pd__2*d_t0__q_th_td - _x8
-    d_cos_td__ground = -_x11
+    d_foot_slope__ground = _x1
+    touchdown_angle = q_th_td
+    d_touchdown_angle__retraction_rate = t0
+    sin_td = _x0
+    _pd__1 = 0.0
+    _x2 = _pd__0*_pd__1
+    d_sin_td__b_y_apex = _x2
+    _x3 = math.cos(q_th_td)
+    d_sin_td__q_th_td = _pd__1*d_t0__q_th_td + _x3
+    d_sin_td__ground = -_x2
+    d_sin_td__retraction_rate = _x3*t0
+    cos_td = _x3
+    _pd__2 = 0.0
+    _x4 = _pd__0*_pd__2
+    d_cos_td__b_y_apex = _x4
+    d_cos_td__q_th_td = _pd__2*d_t0__q_th_td - _x0
+    d_cos_td__ground = -_x4
     d_cos_td__retraction_rate = -_x0*t0
     # tangents as every branch names them
-    _x12 = -_pd__0
+    _x5 = -_pd__0
     d_t_far__q_th_td = d_t0__q_th_td
     d_t_start__b_y_apex = _pd__0
     d_t_start__q_th_td = d_t0__q_th_td
-    d_t_start__ground = _x12
+    d_t_start__ground = _x5
     d_t_td__b_y_apex = _pd__0
-    d_t_td__ground = _x12
+    d_t_td__ground = _x5
     # (internal helper: its callers check that their outputs are finite)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19],) = (t_td, d_t_td__q_th_td,
-        d_t_td__retraction_rate, touchdown_angle, d_touchdown_angle__b_y_apex, d_touchdown_angle__q_th_td,
-        d_touchdown_angle__ground, d_touchdown_angle__retraction_rate, sin_td, d_sin_td__b_y_apex,
-        d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td, d_cos_td__b_y_apex,
-        d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate, d_t_td__b_y_apex, d_t_td__ground,)
+        d_t_td__retraction_rate, touchdown_angle, 0.0, 1.0, 0.0, d_touchdown_angle__retraction_rate, sin_td,
+        d_sin_td__b_y_apex, d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td,
+        d_cos_td__b_y_apex, d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate, d_t_td__b_y_apex,
+        d_t_td__ground,)
     return STATUS_OK
 
 

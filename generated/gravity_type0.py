@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
-#   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:2033d878e51bc99b
+#   flight.py sha256:4670e2b1039b4330
+#   geyer.py sha256:bdac153b10ecc1cc
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and apex-return
 kernels."""

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
-#   flight_jacobian.py sha256:5ec21cb42010f035
-#   geyer_jacobian.py sha256:a894bc5b6caa73d4
+#   flight_jacobian.py sha256:c3faa38d4ef1759a
+#   geyer_jacobian.py sha256:ca3330850029084c
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
 a map its stance and apex-return Jacobians."""

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
-#   flight.py sha256:a75b93d7de718e56
-#   iterative.py sha256:4193daee19f97b21
+#   flight.py sha256:4670e2b1039b4330
+#   iterative.py sha256:a5d0c2cdbf3b781e
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

@@ -7,16 +7,16 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
-#   flight.py sha256:a75b93d7de718e56
-#   geyer.py sha256:2033d878e51bc99b
-#   geyer_vs.py sha256:9bab41fe9df4a8d5
-#   gravity_type0.py sha256:625965ae4cdd4525
-#   gravity_type1.py sha256:b8fb15349aacb309
-#   gravity_type2.py sha256:3c44203b07ea1e1c
-#   gravity_type3.py sha256:9c910c74e6d9af90
-#   gravity_type4.py sha256:bf4149137218a5c6
-#   gravity_type5.py sha256:76191d383cef2130
-#   iterative.py sha256:4193daee19f97b21
+#   flight.py sha256:4670e2b1039b4330
+#   geyer.py sha256:bdac153b10ecc1cc
+#   geyer_vs.py sha256:b4d95160d710b8cc
+#   gravity_type0.py sha256:23bcb15e1dad697e
+#   gravity_type1.py sha256:7ff77c64aa2b92c6
+#   gravity_type2.py sha256:437f5f407aea92f1
+#   gravity_type3.py sha256:863aa8ba461ecdfc
+#   gravity_type4.py sha256:6a1191845b8d51b7
+#   gravity_type5.py sha256:ad4d167c42871c0c
+#   iterative.py sha256:a5d0c2cdbf3b781e
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""

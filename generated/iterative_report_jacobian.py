@@ -7,16 +7,16 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
-#   flight_jacobian.py sha256:5ec21cb42010f035
-#   geyer_jacobian.py sha256:a894bc5b6caa73d4
-#   geyer_vs_jacobian.py sha256:bf6dd42e49d712fa
-#   gravity_type0_jacobian.py sha256:870c61a53e2d9720
-#   gravity_type1_jacobian.py sha256:b561a9048ce62477
-#   gravity_type2_jacobian.py sha256:852a2e3caf6c6ab0
-#   gravity_type3_jacobian.py sha256:37b69cbb74eda0fa
-#   gravity_type4_jacobian.py sha256:e40c8527b3897242
-#   gravity_type5_jacobian.py sha256:4a8ed88c135b0a26
-#   iterative_jacobian.py sha256:283da84eb13f2137
+#   flight_jacobian.py sha256:c3faa38d4ef1759a
+#   geyer_jacobian.py sha256:ca3330850029084c
+#   geyer_vs_jacobian.py sha256:fc7c3bc4b31df554
+#   gravity_type0_jacobian.py sha256:9ca30ebc13bde9ad
+#   gravity_type1_jacobian.py sha256:061872ac3857b481
+#   gravity_type2_jacobian.py sha256:181de5d6b2e0fe36
+#   gravity_type3_jacobian.py sha256:eebb2a1f52c42555
+#   gravity_type4_jacobian.py sha256:b27126bc9890504a
+#   gravity_type5_jacobian.py sha256:b5db79b29da8ab1a
+#   iterative_jacobian.py sha256:bf6cf443c46640ff
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -1165,7 +1165,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jacobian_tail_4d6c2a(_a, out):
+def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
     """The code of iterative_report_apex_return_jacobian's kernels per choice after their choice's own calls,
     shared by the choices with the same code (derive/tangent.py).
 
@@ -1519,7 +1519,7 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -1664,7 +1664,7 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -1815,7 +1815,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -1966,7 +1966,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2117,7 +2117,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2268,7 +2268,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2419,7 +2419,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2570,7 +2570,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status
@@ -2721,7 +2721,7 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
         _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
         _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
         _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
-    _status = iterative_report_apex_return_jacobian_tail_4d6c2a(_a2, out)
+    _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return _status

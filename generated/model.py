@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:a780b0f04af231ea
-#   flight.py sha256:a75b93d7de718e56
-#   geyer_vs.py sha256:9bab41fe9df4a8d5
+#   flight.py sha256:4670e2b1039b4330
+#   geyer_vs.py sha256:b4d95160d710b8cc
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""

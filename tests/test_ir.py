@@ -1335,3 +1335,26 @@ def test_choices_share_one_docstring(tmp_path):
     for name, expected in (("choice_a", 3.0), ("choice_b", 4.0)):
         assert kernels_.invoke(kernels[0], {"w": 1.0, "y": 2.0}, getattr(mod, name))[:1] == (expected,)
     assert kernels_.invoke(kernels[2], {"w": 1.0, "z": 2.0}, mod.other)[:1] == (3.0,)
+
+
+def test_a_stage_at_zero_evaluates_its_values_at_zero_and_keeps_their_derivatives(tmp_path):
+    """``Stage.zero``: the inputs named are 0 wherever the stage runs (a branch taken on that), so the
+    generated values are the expressions at 0 (bit for bit, no term in them), while the derivative
+    kernel differentiates first and evaluates at 0: d/dy of x + y x^2 is x^2 (derive/model/flight.py's
+    leg held still)."""
+    from slipmaps.derive.tangent import Differentiator
+
+    at_zero = Stage(((u, w + y * w**2), (v, sp.cos(w) - y * sp.sin(w))), zero=(y,))
+    kern = _kernel("at_zero", _args(w, y), (at_zero,), _out("u", "v"))
+    diff = Differentiator()
+    diff.jacobian(kern, ("w", "y"), name="at_zero_jacobian", summary="Jacobian of at_zero.")
+    diff.build()
+    text = render_module([kern, *diff.kernels.values()])
+    body = text.split("def at_zero(", 1)[1].split("\ndef ", 1)[0]
+    assert "    u = w\n    v = math.cos(w)\n" in body, body
+    mod = load_module(tmp_path, "at_zero", [kern, *diff.kernels.values()])
+    assert mod.at_zero(2.0, 0.0) == (2.0, math.cos(2.0), OK)
+    res = mod.at_zero_jacobian(2.0, 0.0)
+    assert res[-1] == OK and res[:2] == (2.0, math.cos(2.0))
+    # d u/d w, d u/d y, d v/d w, d v/d y at y = 0
+    assert np.allclose(res[2:6], (1.0, 4.0, -math.sin(2.0), -math.sin(2.0)), rtol=1e-15)

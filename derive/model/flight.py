@@ -260,10 +260,11 @@ def flight_kernels() -> dict[str, Kernel]:
                                     (sin_td, sp.sin(q_th_td) + rate * t0 * sp.cos(q_th_td)),
                                     (cos_td, sp.cos(q_th_td) - rate * t0 * sp.sin(q_th_td)),
                                 ),
-                                comment="t0 with its first-order term in the rate (the rate's derivative; "
-                                "t0 itself here, as Newton's method from t0 gives bit for bit); no pass; "
-                                "the touchdown angle's sine and cosine likewise: those of q_th_td, with "
-                                "their derivatives",
+                                comment="t0 with its first-order term in the rate (its derivative; the rate "
+                                "is 0 here, so the values are t0 and q_th_td's, as Newton's method from t0 "
+                                "gives bit for bit); no pass; the touchdown angle's sine and cosine: those "
+                                "of q_th_td",
+                                zero=(rate,),
                             ),
                         ),
                     ),
