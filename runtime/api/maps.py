@@ -137,7 +137,7 @@ def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tup
         if type(x) is float:  # a number (the defaults among them): no array
             inputs[arg] = x
             continue
-        arr = x if type(x) is np.ndarray and x.dtype == np.float64 else real_array(key, x)
+        arr = real_array(key, x)
         if arr.ndim:
             arrays[arg] = arr
         else:
