@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
+#   support.py sha256:cd017e56afa49b84
 #   exact_stance.py sha256:299560de25340ae1
 #   flight.py sha256:4670e2b1039b4330
 # ----------------------------------------------------------------------------------------------

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
+#   support.py sha256:cd017e56afa49b84
 #   exact_stance.py sha256:299560de25340ae1
-#   flight_jacobian.py sha256:c3faa38d4ef1759a
+#   flight_jacobian.py sha256:72dc6cc8c85fe100
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""

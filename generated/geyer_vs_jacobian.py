@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
-#   flight_jacobian.py sha256:c3faa38d4ef1759a
-#   geyer_jacobian.py sha256:ca3330850029084c
+#   support.py sha256:cd017e56afa49b84
+#   flight_jacobian.py sha256:72dc6cc8c85fe100
+#   geyer_jacobian.py sha256:2135d36891bcf61f
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map
 its stance and apex-return Jacobians."""

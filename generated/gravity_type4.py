@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
+#   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:4670e2b1039b4330
-#   geyer.py sha256:bdac153b10ecc1cc
+#   geyer.py sha256:d4de65ad7b7743ae
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time
 and apex-return kernels."""

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
+#   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:4670e2b1039b4330
-#   iterative.py sha256:a5d0c2cdbf3b781e
+#   iterative.py sha256:4337c496c76156d9
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
-#   geyer.py sha256:bdac153b10ecc1cc
-#   geyer_vs.py sha256:b4d95160d710b8cc
-#   gravity_type0.py sha256:23bcb15e1dad697e
-#   gravity_type1.py sha256:7ff77c64aa2b92c6
-#   gravity_type2.py sha256:437f5f407aea92f1
-#   gravity_type3.py sha256:863aa8ba461ecdfc
-#   gravity_type4.py sha256:6a1191845b8d51b7
-#   gravity_type5.py sha256:ad4d167c42871c0c
-#   iterative.py sha256:a5d0c2cdbf3b781e
-#   iterative_report.py sha256:dabc6a4a809e5c52
+#   support.py sha256:cd017e56afa49b84
+#   geyer.py sha256:d4de65ad7b7743ae
+#   geyer_vs.py sha256:2938ab68f64ec8b9
+#   gravity_type0.py sha256:aeeaedd4e957536b
+#   gravity_type1.py sha256:0c9da4f0c6ce0a10
+#   gravity_type2.py sha256:a9520b2072c5248a
+#   gravity_type3.py sha256:f6ec00956f584345
+#   gravity_type4.py sha256:0434fb7f17ccb53b
+#   gravity_type5.py sha256:98f4266d17071a0b
+#   iterative.py sha256:4337c496c76156d9
+#   iterative_report.py sha256:70ba3810f201bca7
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""

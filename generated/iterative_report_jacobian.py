@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
-#   flight_jacobian.py sha256:c3faa38d4ef1759a
-#   geyer_jacobian.py sha256:ca3330850029084c
-#   geyer_vs_jacobian.py sha256:fc7c3bc4b31df554
-#   gravity_type0_jacobian.py sha256:9ca30ebc13bde9ad
-#   gravity_type1_jacobian.py sha256:061872ac3857b481
-#   gravity_type2_jacobian.py sha256:181de5d6b2e0fe36
-#   gravity_type3_jacobian.py sha256:eebb2a1f52c42555
-#   gravity_type4_jacobian.py sha256:b27126bc9890504a
-#   gravity_type5_jacobian.py sha256:b5db79b29da8ab1a
-#   iterative_jacobian.py sha256:bf6cf443c46640ff
+#   support.py sha256:cd017e56afa49b84
+#   flight_jacobian.py sha256:72dc6cc8c85fe100
+#   geyer_jacobian.py sha256:2135d36891bcf61f
+#   geyer_vs_jacobian.py sha256:9e4fc7ca9bcfb994
+#   gravity_type0_jacobian.py sha256:7d1e3ab41d13ac05
+#   gravity_type1_jacobian.py sha256:c149ea87e6816131
+#   gravity_type2_jacobian.py sha256:6477888fe39c6c68
+#   gravity_type3_jacobian.py sha256:208e1ca0a42ecb00
+#   gravity_type4_jacobian.py sha256:af0d509e8d22d547
+#   gravity_type5_jacobian.py sha256:2cb99786e787ec4a
+#   iterative_jacobian.py sha256:2109d5d4bf692004
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""

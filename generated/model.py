@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:a780b0f04af231ea
+#   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:4670e2b1039b4330
-#   geyer_vs.py sha256:b4d95160d710b8cc
+#   geyer_vs.py sha256:2938ab68f64ec8b9
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""

@@ -72,10 +72,8 @@ def row(typingctx, A, i):
         first = [index, context.get_constant(types.intp, 0)]
         ptr = cgutils.get_item_pointer2(context, builder, ary.data, shape, strides, aryty.layout, first)
         out = context.make_array(rowty)(context, builder)
-        size = context.get_abi_sizeof(context.get_data_type(aryty.dtype))
-        itemsize = context.get_constant(types.intp, size)
         context.populate_array(
-            out, data=ptr, shape=[shape[1]], strides=[strides[1]], itemsize=itemsize, meminfo=None
+            out, data=ptr, shape=[shape[1]], strides=[strides[1]], itemsize=ary.itemsize, meminfo=None
         )
         return out._getvalue()
 
