@@ -36,6 +36,7 @@ from .model.kernels import MODULES as MODEL_MODULES
 from .model.kernels import PUBLIC as PUBLIC_MODULE
 from .model.kernels import flight_kernels, public_kernels
 from .render import render
+from .share import share_bodies
 from .status import STATUS_CODES
 from .tangent import Differentiator, widened
 from .wrap import dense, wrap
@@ -198,6 +199,9 @@ def _share_docs(kernels: list[dict]) -> None:
     the module says the rest once."""
     first: dict[tuple, str] = {}
     for k in kernels:
+        if k["shared_by"]:  # a shared body's docstring says what it is (derive/share.py)
+            k["doc_ref"] = ""
+            continue
         ref = first.setdefault(_doc_key(k), k["name"])
         k["doc_ref"] = "" if ref == k["name"] else ref
 
@@ -350,6 +354,8 @@ def build_files() -> dict[str, str]:
     mods = modules()
     check_module_names(mods)
     lowered = {mod.name: [lower(k) for k in mod.kernels()] for mod in mods}
+    inline = {k["name"] for ks in lowered.values() for k in ks if k["inline"]}
+    lowered = {name: share_bodies(ks, inline) for name, ks in lowered.items()}
     files[f"generated/{SUPPORT_MODULE}.py"] = wrap(
         render(
             "support.py.j2",

@@ -385,6 +385,11 @@ class Kernel:
     #: derivatives of a caller go through it (:mod:`.tangent`).
     jacobian: Kernel | None = None
     jacobian_wrt: tuple[str, ...] = ()
+    #: Its callers' derivatives read every entry of its derivative, the identically zero ones too
+    #: (:mod:`.tangent`): one of several interchangeable kernels (the zeroth iterates of the
+    #: iterative maps, one per choice), whose callers are then the same code but for the callee
+    #: (:mod:`.share`).
+    dense_tangent: bool = False
 
     def __post_init__(self):
         if self.external and (self.steps or "." in self.module):

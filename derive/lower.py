@@ -106,6 +106,8 @@ class _Ctx:
     loops: int = 0
     ops: int = 0
     callees: set[tuple[str, str]] = field(default_factory=set)
+    #: every kernel the code calls, of any module (derive/share.py)
+    called: set[str] = field(default_factory=set)
     #: the status codes the kernel's code names (imported from generated/status.py)
     statuses: set[str] = field(default_factory=set)
     #: the direction array ``_T``: its rows (the largest used + 1) and directions (columns)
@@ -338,6 +340,7 @@ def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
         raise LoweringError(ctx.where(f"{where}: the callee returns a status, the caller cannot"))
     for name in callee.arg_names:
         ctx.require(call.args[name], f"{where}, argument {name}")
+    ctx.called.add(callee.name)
     if callee.module != ctx.kernel.module:
         ctx.callees.add((callee.module, callee.name))
     n = ctx.calls
@@ -802,13 +805,22 @@ def _forward(body: list[dict]) -> dict[str, str]:
             for b in n["binds"]:
                 if _SOURCE.match(b["code"]):
                     defs[b["name"]] = (n, b)
-        elif n["kind"] == "assign" and _SOURCE.match(n["code"]):
+        elif n["kind"] == "assign" and (_SOURCE.match(n["code"]) or n["code"] in defs):
+            # (a copy of a forwarded value, e.g. a derivative taken from a callee's row as it is)
             defs[n["name"]] = (n, None)
     if not defs:
         return {}
     skip = {id(b if b is not None else n) for n, b in defs.values()}
     used = Counter(w for t in _strings(body, skip) for w in _WORD.findall(t))
     forward = {name: (b or n)["code"] for name, (n, b) in defs.items() if not used[name]}
+    # a copy of a copy reads the source
+    for name, code in forward.items():
+        while code in forward:
+            code = forward[code]
+        forward[name] = code
+    if not forward or any(code in defs for code in forward.values()):
+        # (a copy of a value kept by name: only sources forward)
+        forward = {name: code for name, code in forward.items() if code not in defs}
     if not forward:
         return {}
     word = re.compile(r"\b(" + "|".join(map(re.escape, sorted(forward))) + r")\b")
@@ -821,6 +833,8 @@ def _forward(body: list[dict]) -> dict[str, str]:
         for n in nodes:
             if n["kind"] == "assign" and n["name"] in forward and any(n is d[0] for d in defs.values()):
                 continue
+            if n["kind"] == "assign" and n["code"] in forward:
+                n["code"] = forward[n["code"]]  # a copy kept, of a value forwarded
             if "setup" in n:
                 n["setup"] = [sub(line) for line in n["setup"]]
             if n["kind"] == "call":
@@ -948,6 +962,14 @@ def lower(kernel: Kernel) -> dict:
         "tail": bool(tails),
         "ops": int(ctx.ops),
         "callees": sorted(ctx.callees),
+        "called": sorted(ctx.called),
+        # set by derive/share.py: the shared body an entry point runs and the callees it passes; the
+        # kernels a shared body serves and its callee arguments
+        "entry_of": None,
+        "passes": [],
+        "shared_by": [],
+        "shared_names": "",
+        "shared_args": [],
         "statuses": sorted(ctx.statuses),
         "rows": ctx.rows,
         "directions": ctx.directions,

@@ -714,7 +714,7 @@ class _Ctx:
         for out, local in c.bind.items():
             entries[local] = []
             for a in active:
-                if (out, a) not in derived.zero:
+                if (out, a) not in derived.zero or c.kernel.dense_tangent:
                     name = _entry_name(local, a)
                     bind[tangent_name(out, a)] = name
                     entries[local].append((sym(name), a))
@@ -750,7 +750,7 @@ class _Ctx:
         for out, local in c.bind.items():
             tangent = {w: sp.S.Zero for w in self.frame.wrt}
             for j, w in enumerate(dirs):
-                if (out, str(j)) not in derived.zero:
+                if (out, str(j)) not in derived.zero or callee.dense_tangent:
                     bind[tangent_name(out, str(j))] = tangent_name(local, w)
                     tangent[w] = sym(tangent_name(local, w))
             self.frame.tangents[local] = tangent

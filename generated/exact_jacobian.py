@@ -92,127 +92,6 @@ def exact_stance_jacobian(x, p, out):
     _c0 = stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    dext_t_bottom__q_r_td = _o0[10]
-    dext_t_bottom__q_rd_td = _o0[11]
-    dext_t_bottom__q_th_td = _o0[12]
-    dext_t_bottom__q_thd_td = _o0[13]
-    dext_t_bottom__k_c = _o0[14]
-    dext_t_bottom__k_d = _o0[15]
-    dext_t_stance__q_r_td = _o0[16]
-    dext_t_stance__q_rd_td = _o0[17]
-    dext_t_stance__q_th_td = _o0[18]
-    dext_t_stance__q_thd_td = _o0[19]
-    dext_t_stance__k_c = _o0[20]
-    dext_t_stance__k_d = _o0[21]
-    dext_bottom_q_r__q_r_td = _o0[22]
-    dext_bottom_q_r__q_rd_td = _o0[23]
-    dext_bottom_q_r__q_th_td = _o0[24]
-    dext_bottom_q_r__q_thd_td = _o0[25]
-    dext_bottom_q_r__k_c = _o0[26]
-    dext_bottom_q_r__k_d = _o0[27]
-    dext_bottom_q_rd__q_r_td = _o0[28]
-    dext_bottom_q_rd__q_rd_td = _o0[29]
-    dext_bottom_q_rd__q_th_td = _o0[30]
-    dext_bottom_q_rd__q_thd_td = _o0[31]
-    dext_bottom_q_rd__k_c = _o0[32]
-    dext_bottom_q_rd__k_d = _o0[33]
-    dext_bottom_q_th__q_r_td = _o0[34]
-    dext_bottom_q_th__q_rd_td = _o0[35]
-    dext_bottom_q_th__q_th_td = _o0[36]
-    dext_bottom_q_th__q_thd_td = _o0[37]
-    dext_bottom_q_th__k_c = _o0[38]
-    dext_bottom_q_th__k_d = _o0[39]
-    dext_bottom_q_thd__q_r_td = _o0[40]
-    dext_bottom_q_thd__q_rd_td = _o0[41]
-    dext_bottom_q_thd__q_th_td = _o0[42]
-    dext_bottom_q_thd__q_thd_td = _o0[43]
-    dext_bottom_q_thd__k_c = _o0[44]
-    dext_bottom_q_thd__k_d = _o0[45]
-    dext_liftoff_q_r__q_r_td = _o0[46]
-    dext_liftoff_q_r__q_rd_td = _o0[47]
-    dext_liftoff_q_r__q_th_td = _o0[48]
-    dext_liftoff_q_r__q_thd_td = _o0[49]
-    dext_liftoff_q_r__k_c = _o0[50]
-    dext_liftoff_q_r__k_d = _o0[51]
-    dext_liftoff_q_rd__q_r_td = _o0[52]
-    dext_liftoff_q_rd__q_rd_td = _o0[53]
-    dext_liftoff_q_rd__q_th_td = _o0[54]
-    dext_liftoff_q_rd__q_thd_td = _o0[55]
-    dext_liftoff_q_rd__k_c = _o0[56]
-    dext_liftoff_q_rd__k_d = _o0[57]
-    dext_liftoff_q_th__q_r_td = _o0[58]
-    dext_liftoff_q_th__q_rd_td = _o0[59]
-    dext_liftoff_q_th__q_th_td = _o0[60]
-    dext_liftoff_q_th__q_thd_td = _o0[61]
-    dext_liftoff_q_th__k_c = _o0[62]
-    dext_liftoff_q_th__k_d = _o0[63]
-    dext_liftoff_q_thd__q_r_td = _o0[64]
-    dext_liftoff_q_thd__q_rd_td = _o0[65]
-    dext_liftoff_q_thd__q_th_td = _o0[66]
-    dext_liftoff_q_thd__q_thd_td = _o0[67]
-    dext_liftoff_q_thd__k_c = _o0[68]
-    dext_liftoff_q_thd__k_d = _o0[69]
-    # derivatives of the outputs
-    d_t_bottom__q_r_td = dext_t_bottom__q_r_td
-    d_t_bottom__q_rd_td = dext_t_bottom__q_rd_td
-    d_t_bottom__q_th_td = dext_t_bottom__q_th_td
-    d_t_bottom__q_thd_td = dext_t_bottom__q_thd_td
-    d_t_bottom__k_c = dext_t_bottom__k_c
-    d_t_bottom__k_d = dext_t_bottom__k_d
-    d_t_stance__q_r_td = dext_t_stance__q_r_td
-    d_t_stance__q_rd_td = dext_t_stance__q_rd_td
-    d_t_stance__q_th_td = dext_t_stance__q_th_td
-    d_t_stance__q_thd_td = dext_t_stance__q_thd_td
-    d_t_stance__k_c = dext_t_stance__k_c
-    d_t_stance__k_d = dext_t_stance__k_d
-    d_bottom_q_r__q_r_td = dext_bottom_q_r__q_r_td
-    d_bottom_q_r__q_rd_td = dext_bottom_q_r__q_rd_td
-    d_bottom_q_r__q_th_td = dext_bottom_q_r__q_th_td
-    d_bottom_q_r__q_thd_td = dext_bottom_q_r__q_thd_td
-    d_bottom_q_r__k_c = dext_bottom_q_r__k_c
-    d_bottom_q_r__k_d = dext_bottom_q_r__k_d
-    d_bottom_q_rd__q_r_td = dext_bottom_q_rd__q_r_td
-    d_bottom_q_rd__q_rd_td = dext_bottom_q_rd__q_rd_td
-    d_bottom_q_rd__q_th_td = dext_bottom_q_rd__q_th_td
-    d_bottom_q_rd__q_thd_td = dext_bottom_q_rd__q_thd_td
-    d_bottom_q_rd__k_c = dext_bottom_q_rd__k_c
-    d_bottom_q_rd__k_d = dext_bottom_q_rd__k_d
-    d_bottom_q_th__q_r_td = dext_bottom_q_th__q_r_td
-    d_bottom_q_th__q_rd_td = dext_bottom_q_th__q_rd_td
-    d_bottom_q_th__q_th_td = dext_bottom_q_th__q_th_td
-    d_bottom_q_th__q_thd_td = dext_bottom_q_th__q_thd_td
-    d_bottom_q_th__k_c = dext_bottom_q_th__k_c
-    d_bottom_q_th__k_d = dext_bottom_q_th__k_d
-    d_bottom_q_thd__q_r_td = dext_bottom_q_thd__q_r_td
-    d_bottom_q_thd__q_rd_td = dext_bottom_q_thd__q_rd_td
-    d_bottom_q_thd__q_th_td = dext_bottom_q_thd__q_th_td
-    d_bottom_q_thd__q_thd_td = dext_bottom_q_thd__q_thd_td
-    d_bottom_q_thd__k_c = dext_bottom_q_thd__k_c
-    d_bottom_q_thd__k_d = dext_bottom_q_thd__k_d
-    d_liftoff_q_r__q_r_td = dext_liftoff_q_r__q_r_td
-    d_liftoff_q_r__q_rd_td = dext_liftoff_q_r__q_rd_td
-    d_liftoff_q_r__q_th_td = dext_liftoff_q_r__q_th_td
-    d_liftoff_q_r__q_thd_td = dext_liftoff_q_r__q_thd_td
-    d_liftoff_q_r__k_c = dext_liftoff_q_r__k_c
-    d_liftoff_q_r__k_d = dext_liftoff_q_r__k_d
-    d_liftoff_q_rd__q_r_td = dext_liftoff_q_rd__q_r_td
-    d_liftoff_q_rd__q_rd_td = dext_liftoff_q_rd__q_rd_td
-    d_liftoff_q_rd__q_th_td = dext_liftoff_q_rd__q_th_td
-    d_liftoff_q_rd__q_thd_td = dext_liftoff_q_rd__q_thd_td
-    d_liftoff_q_rd__k_c = dext_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = dext_liftoff_q_rd__k_d
-    d_liftoff_q_th__q_r_td = dext_liftoff_q_th__q_r_td
-    d_liftoff_q_th__q_rd_td = dext_liftoff_q_th__q_rd_td
-    d_liftoff_q_th__q_th_td = dext_liftoff_q_th__q_th_td
-    d_liftoff_q_th__q_thd_td = dext_liftoff_q_th__q_thd_td
-    d_liftoff_q_th__k_c = dext_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = dext_liftoff_q_th__k_d
-    d_liftoff_q_thd__q_r_td = dext_liftoff_q_thd__q_r_td
-    d_liftoff_q_thd__q_rd_td = dext_liftoff_q_thd__q_rd_td
-    d_liftoff_q_thd__q_th_td = dext_liftoff_q_thd__q_th_td
-    d_liftoff_q_thd__q_thd_td = dext_liftoff_q_thd__q_thd_td
-    d_liftoff_q_thd__k_c = dext_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = dext_liftoff_q_thd__k_d
     # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
@@ -221,21 +100,12 @@ def exact_stance_jacobian(x, p, out):
         out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
         out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
         out[67], out[68], out[69],) = (_o0[0], _o0[1], _o0[2], _o0[3], _o0[4], _o0[5], _o0[6], _o0[7], _o0[8],
-        _o0[9], d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td,
-        d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td,
-        d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
-        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d,
-        d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td,
-        d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td,
-        d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d,
-        d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td,
-        d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
-        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d,
-        d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
-        d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td,
-        d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d,
-        d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
-        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,)
+        _o0[9], _o0[10], _o0[11], _o0[12], _o0[13], _o0[14], _o0[15], _o0[16], _o0[17], _o0[18], _o0[19],
+        _o0[20], _o0[21], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], _o0[27], _o0[28], _o0[29], _o0[30],
+        _o0[31], _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], _o0[37], _o0[38], _o0[39], _o0[40], _o0[41],
+        _o0[42], _o0[43], _o0[44], _o0[45], _o0[46], _o0[47], _o0[48], _o0[49], _o0[50], _o0[51], _o0[52],
+        _o0[53], _o0[54], _o0[55], _o0[56], _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], _o0[62], _o0[63],
+        _o0[64], _o0[65], _o0[66], _o0[67], _o0[68], _o0[69],)
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -329,7 +199,6 @@ def exact_apex_return_jacobian(x, p, out):
         q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_th = _o0[2]
     foot_x = _o0[5]
     _j_td_q_rd__b_y_apex = _o0[11]
     _j_td_q_rd__b_xd_apex = _o0[12]
@@ -345,10 +214,6 @@ def exact_apex_return_jacobian(x, p, out):
     _j_td_q_thd__q_th_td = _o0[23]
     _j_td_q_thd__ground = _o0[24]
     _j_td_q_thd__retraction_rate = _o0[25]
-    _j_t_descent__b_y_apex = _o0[26]
-    _j_t_descent__q_th_td = _o0[28]
-    _j_t_descent__ground = _o0[29]
-    _j_t_descent__retraction_rate = _o0[30]
     _j_foot_x__b_y_apex = _o0[31]
     _j_foot_x__b_xd_apex = _o0[32]
     _j_foot_x__q_th_td = _o0[33]
@@ -356,7 +221,7 @@ def exact_apex_return_jacobian(x, p, out):
     _j_foot_x__retraction_rate = _o0[35]
     # stance: Exact stance by numerical integration (DOP853)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], td_q_th, _o0[3],)
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = exact_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -368,8 +233,6 @@ def exact_apex_return_jacobian(x, p, out):
     _j_t_stance__q_rd_td = _o1[17]
     _j_t_stance__q_th_td = _o1[18]
     _j_t_stance__q_thd_td = _o1[19]
-    _j_t_stance__k_c = _o1[20]
-    _j_t_stance__k_d = _o1[21]
     _j_liftoff_q_r__q_rd_td = _o1[47]
     _j_liftoff_q_r__q_th_td = _o1[48]
     _j_liftoff_q_r__q_thd_td = _o1[49]
@@ -556,14 +419,7 @@ def exact_apex_return_jacobian(x, p, out):
     d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     d_step_length__retraction_rate = _j_foot_x__retraction_rate + d_next_apex_x__retraction_rate
     foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
     # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__retraction_rate = _j_t_descent__retraction_rate
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
     d_liftoff_q_r__k_c = _j_liftoff_q_r__k_c
     d_liftoff_q_r__k_d = _j_liftoff_q_r__k_d
     d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
@@ -594,18 +450,17 @@ def exact_apex_return_jacobian(x, p, out):
         out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
         out[89], out[90], out[91], out[92], out[93], out[94], out[95], out[96], out[97], out[98], out[99],
         out[100], out[101], out[102], out[103],) = (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2], liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o0[2],
         d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
         d_apex_height__retraction_rate, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex,
         d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__retraction_rate,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td,
-        d_t_descent__ground, d_t_descent__retraction_rate, 0.0, 0.0, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__retraction_rate,
-        d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
-        d_t_ascent__ground, d_t_ascent__retraction_rate, d_t_ascent__k_c, d_t_ascent__k_d,
-        d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground,
-        d_liftoff_q_r__retraction_rate, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
+        d_apex_speed__k_c, d_apex_speed__k_d, _o0[26], 0.0, _o0[28], _o0[29], _o0[30], 0.0, 0.0,
+        d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
+        d_t_stance__retraction_rate, _o1[20], _o1[21], d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
+        d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__retraction_rate, d_t_ascent__k_c,
+        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
+        d_liftoff_q_r__ground, d_liftoff_q_r__retraction_rate, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d,
+        d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
         d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex,
         d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
         d_liftoff_q_th__retraction_rate, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,

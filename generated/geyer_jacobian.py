@@ -553,7 +553,6 @@ def geyer_apex_return_jacobian(x, p, out):
         q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_th = _o0[2]
     foot_x = _o0[5]
     _j_td_q_rd__b_y_apex = _o0[11]
     _j_td_q_rd__b_xd_apex = _o0[12]
@@ -569,10 +568,6 @@ def geyer_apex_return_jacobian(x, p, out):
     _j_td_q_thd__q_th_td = _o0[23]
     _j_td_q_thd__ground = _o0[24]
     _j_td_q_thd__retraction_rate = _o0[25]
-    _j_t_descent__b_y_apex = _o0[26]
-    _j_t_descent__q_th_td = _o0[28]
-    _j_t_descent__ground = _o0[29]
-    _j_t_descent__retraction_rate = _o0[30]
     _j_foot_x__b_y_apex = _o0[31]
     _j_foot_x__b_xd_apex = _o0[32]
     _j_foot_x__q_th_td = _o0[33]
@@ -580,7 +575,7 @@ def geyer_apex_return_jacobian(x, p, out):
     _j_foot_x__retraction_rate = _o0[35]
     # stance: Geyer et al.'s approximate stance map
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], td_q_th, _o0[3],)
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(60), 60)
     _c1 = geyer_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -591,7 +586,6 @@ def geyer_apex_return_jacobian(x, p, out):
     liftoff_q_thd = _o1[9]
     _j_t_stance__q_rd_td = _o1[16]
     _j_t_stance__q_thd_td = _o1[18]
-    _j_t_stance__k = _o1[19]
     _j_liftoff_q_rd__q_rd_td = _o1[46]
     _j_liftoff_q_rd__q_thd_td = _o1[48]
     _j_liftoff_q_rd__k = _o1[49]
@@ -723,13 +717,7 @@ def geyer_apex_return_jacobian(x, p, out):
     d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     d_step_length__retraction_rate = _j_foot_x__retraction_rate + d_next_apex_x__retraction_rate
     foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
     # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__retraction_rate = _j_t_descent__retraction_rate
-    d_t_stance__k = _j_t_stance__k
     d_liftoff_q_rd__k = _j_liftoff_q_rd__k
     d_liftoff_q_th__k = _j_liftoff_q_th__k
     d_liftoff_q_thd__k = _j_liftoff_q_thd__k
@@ -753,13 +741,12 @@ def geyer_apex_return_jacobian(x, p, out):
         out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76], out[77],
         out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
         out[89], out[90],) = (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, d_apex_height__b_y_apex,
-        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
-        d_apex_height__retraction_rate, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
-        d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__retraction_rate, d_apex_speed__k,
-        d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__retraction_rate,
-        0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
-        d_t_stance__retraction_rate, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o0[2], d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__retraction_rate, d_apex_height__k,
+        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
+        d_apex_speed__retraction_rate, d_apex_speed__k, _o0[26], 0.0, _o0[28], _o0[29], _o0[30], 0.0,
+        d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
+        d_t_stance__retraction_rate, _o1[19], d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
         d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__retraction_rate, d_t_ascent__k, 0.0, 0.0, 0.0,
         0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
         d_liftoff_q_rd__ground, d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,

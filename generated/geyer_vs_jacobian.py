@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   flight_jacobian.py sha256:72dc6cc8c85fe100
-#   geyer_jacobian.py sha256:2135d36891bcf61f
+#   geyer_jacobian.py sha256:af7590c63bb7e7e7
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -1195,7 +1195,6 @@ def geyer_vs_apex_return_jacobian(x, p, out):
         q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_th = _o0[2]
     foot_x = _o0[5]
     _j_td_q_rd__b_y_apex = _o0[11]
     _j_td_q_rd__b_xd_apex = _o0[12]
@@ -1211,10 +1210,6 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     _j_td_q_thd__q_th_td = _o0[23]
     _j_td_q_thd__ground = _o0[24]
     _j_td_q_thd__retraction_rate = _o0[25]
-    _j_t_descent__b_y_apex = _o0[26]
-    _j_t_descent__q_th_td = _o0[28]
-    _j_t_descent__ground = _o0[29]
-    _j_t_descent__retraction_rate = _o0[30]
     _j_foot_x__b_y_apex = _o0[31]
     _j_foot_x__b_xd_apex = _o0[32]
     _j_foot_x__q_th_td = _o0[33]
@@ -1222,7 +1217,7 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     _j_foot_x__retraction_rate = _o0[35]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], td_q_th, _o0[3],)
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(91), 91)
     _c1 = geyer_vs_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1234,8 +1229,6 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     _j_t_stance__q_rd_td = _o1[20]
     _j_t_stance__q_th_td = _o1[21]
     _j_t_stance__q_thd_td = _o1[22]
-    _j_t_stance__k_c = _o1[23]
-    _j_t_stance__k_d = _o1[24]
     _j_liftoff_q_rd__q_rd_td = _o1[56]
     _j_liftoff_q_rd__q_th_td = _o1[57]
     _j_liftoff_q_rd__q_thd_td = _o1[58]
@@ -1254,13 +1247,9 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     _j_P_c_compression__q_rd_td = _o1[74]
     _j_P_c_compression__q_th_td = _o1[75]
     _j_P_c_compression__q_thd_td = _o1[76]
-    _j_P_c_compression__k_c = _o1[77]
-    _j_P_c_compression__k_d = _o1[78]
     _j_P_c_decompression__q_rd_td = _o1[80]
     _j_P_c_decompression__q_th_td = _o1[81]
     _j_P_c_decompression__q_thd_td = _o1[82]
-    _j_P_c_decompression__k_c = _o1[83]
-    _j_P_c_decompression__k_d = _o1[84]
     # chain rule through geyer_vs_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_th_td*_j_td_q_th__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -1420,14 +1409,7 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     d_step_length__retraction_rate = _j_foot_x__retraction_rate + d_next_apex_x__retraction_rate
     foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
     # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__retraction_rate = _j_t_descent__retraction_rate
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
     d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
     d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
     d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
@@ -1445,10 +1427,6 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     d_touchdown_q_th__q_th_td = _j_td_q_th__q_th_td
     d_touchdown_q_th__ground = _j_td_q_th__ground
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
-    d_P_c_compression__k_c = _j_P_c_compression__k_c
-    d_P_c_compression__k_d = _j_P_c_compression__k_d
-    d_P_c_decompression__k_c = _j_P_c_decompression__k_c
-    d_P_c_decompression__k_d = _j_P_c_decompression__k_d
     # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
@@ -1463,16 +1441,15 @@ def geyer_vs_apex_return_jacobian(x, p, out):
         out[110], out[111], out[112], out[113], out[114], out[115], out[116], out[117], out[118], out[119],
         out[120], out[121], out[122], out[123], out[124], out[125], out[126], out[127],) = (_o2[0], _o2[1],
         _o0[4], _o1[1], _o2[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x,
-        foot_y, touchdown_q_th, _o1[10], _o1[11], _o1[12], d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+        foot_y, _o0[2], _o1[10], _o1[11], _o1[12], d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
         d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__retraction_rate, d_apex_height__k_c,
         d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-        d_apex_speed__ground, d_apex_speed__retraction_rate, d_apex_speed__k_c, d_apex_speed__k_d,
-        d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__retraction_rate,
-        0.0, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
-        d_t_stance__retraction_rate, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex,
-        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__retraction_rate,
-        d_t_ascent__k_c, d_t_ascent__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
+        d_apex_speed__ground, d_apex_speed__retraction_rate, d_apex_speed__k_c, d_apex_speed__k_d, _o0[26],
+        0.0, _o0[28], _o0[29], _o0[30], 0.0, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex,
+        d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__retraction_rate, _o1[23], _o1[24],
+        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground,
+        d_t_ascent__retraction_rate, d_t_ascent__k_c, d_t_ascent__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
         d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex,
         d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
         d_liftoff_q_th__retraction_rate, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
@@ -1484,10 +1461,9 @@ def geyer_vs_apex_return_jacobian(x, p, out):
         0.0, 0.0, 1.0, 0.0, 0.0, 0.0, d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td,
         d_touchdown_q_th__ground, d_touchdown_q_th__retraction_rate, 0.0, 0.0, d_P_c_compression__b_y_apex,
         d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground,
-        d_P_c_compression__retraction_rate, d_P_c_compression__k_c, d_P_c_compression__k_d,
-        d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td,
-        d_P_c_decompression__ground, d_P_c_decompression__retraction_rate, d_P_c_decompression__k_c,
-        d_P_c_decompression__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
+        d_P_c_compression__retraction_rate, _o1[77], _o1[78], d_P_c_decompression__b_y_apex,
+        d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground,
+        d_P_c_decompression__retraction_rate, _o1[83], _o1[84], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   flight_jacobian.py sha256:72dc6cc8c85fe100
-#   geyer_jacobian.py sha256:2135d36891bcf61f
+#   geyer_jacobian.py sha256:af7590c63bb7e7e7
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type4: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -1032,7 +1032,6 @@ def gravity_type4_apex_return_jacobian(x, p, out):
         q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_th = _o0[2]
     foot_x = _o0[5]
     _j_td_q_rd__b_y_apex = _o0[11]
     _j_td_q_rd__b_xd_apex = _o0[12]
@@ -1048,10 +1047,6 @@ def gravity_type4_apex_return_jacobian(x, p, out):
     _j_td_q_thd__q_th_td = _o0[23]
     _j_td_q_thd__ground = _o0[24]
     _j_td_q_thd__retraction_rate = _o0[25]
-    _j_t_descent__b_y_apex = _o0[26]
-    _j_t_descent__q_th_td = _o0[28]
-    _j_t_descent__ground = _o0[29]
-    _j_t_descent__retraction_rate = _o0[30]
     _j_foot_x__b_y_apex = _o0[31]
     _j_foot_x__b_xd_apex = _o0[32]
     _j_foot_x__q_th_td = _o0[33]
@@ -1059,7 +1054,7 @@ def gravity_type4_apex_return_jacobian(x, p, out):
     _j_foot_x__retraction_rate = _o0[35]
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], td_q_th, _o0[3],)
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(72), 72)
     _c1 = gravity_type4_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1071,7 +1066,6 @@ def gravity_type4_apex_return_jacobian(x, p, out):
     _j_t_stance__q_rd_td = _o1[18]
     _j_t_stance__q_th_td = _o1[19]
     _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k = _o1[21]
     _j_liftoff_q_rd__q_rd_td = _o1[48]
     _j_liftoff_q_rd__q_th_td = _o1[49]
     _j_liftoff_q_rd__q_thd_td = _o1[50]
@@ -1087,7 +1081,6 @@ def gravity_type4_apex_return_jacobian(x, p, out):
     _j_P_c__q_rd_td = _o1[63]
     _j_P_c__q_th_td = _o1[64]
     _j_P_c__q_thd_td = _o1[65]
-    _j_P_c__k = _o1[66]
     # chain rule through gravity_type4_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_th_td*_j_td_q_th__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -1222,13 +1215,7 @@ def gravity_type4_apex_return_jacobian(x, p, out):
     d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     d_step_length__retraction_rate = _j_foot_x__retraction_rate + d_next_apex_x__retraction_rate
     foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
     # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__retraction_rate = _j_t_descent__retraction_rate
-    d_t_stance__k = _j_t_stance__k
     d_liftoff_q_rd__k = _j_liftoff_q_rd__k
     d_liftoff_q_th__k = _j_liftoff_q_th__k
     d_liftoff_q_thd__k = _j_liftoff_q_thd__k
@@ -1242,7 +1229,6 @@ def gravity_type4_apex_return_jacobian(x, p, out):
     d_touchdown_q_th__q_th_td = _j_td_q_th__q_th_td
     d_touchdown_q_th__ground = _j_td_q_th__ground
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
-    d_P_c__k = _j_P_c__k
     # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
@@ -1254,17 +1240,17 @@ def gravity_type4_apex_return_jacobian(x, p, out):
         out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
         out[89], out[90], out[91], out[92], out[93], out[94], out[95], out[96], out[97], out[98], out[99],
         out[100], out[101], out[102], out[103], out[104],) = (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2],
-        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,
-        _o1[10], _o1[11], d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
+        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o0[2], _o1[10],
+        _o1[11], d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
         d_apex_height__ground, d_apex_height__retraction_rate, d_apex_height__k, d_apex_speed__b_y_apex,
         d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__retraction_rate,
-        d_apex_speed__k, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground,
-        d_t_descent__retraction_rate, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
-        d_t_stance__ground, d_t_stance__retraction_rate, d_t_stance__k, d_t_ascent__b_y_apex,
-        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__retraction_rate,
-        d_t_ascent__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k,
-        d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
+        d_apex_speed__k, _o0[26], 0.0, _o0[28], _o0[29], _o0[30], 0.0, d_t_stance__b_y_apex,
+        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__retraction_rate, _o1[21],
+        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground,
+        d_t_ascent__retraction_rate, d_t_ascent__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
+        d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
+        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
         d_liftoff_q_th__retraction_rate, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
         d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground,
         d_liftoff_q_thd__retraction_rate, d_liftoff_q_thd__k, d_step_length__b_y_apex,
@@ -1273,7 +1259,7 @@ def gravity_type4_apex_return_jacobian(x, p, out):
         d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0,
         d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
         d_touchdown_q_th__retraction_rate, 0.0, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td,
-        d_P_c__ground, d_P_c__retraction_rate, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
+        d_P_c__ground, d_P_c__retraction_rate, _o1[66], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:4670e2b1039b4330
-#   iterative.py sha256:4337c496c76156d9
+#   iterative.py sha256:62e44891ccf3c0c2
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

@@ -8,14 +8,14 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   flight_jacobian.py sha256:72dc6cc8c85fe100
-#   geyer_jacobian.py sha256:2135d36891bcf61f
-#   geyer_vs_jacobian.py sha256:9e4fc7ca9bcfb994
-#   gravity_type0_jacobian.py sha256:7d1e3ab41d13ac05
-#   gravity_type1_jacobian.py sha256:c149ea87e6816131
-#   gravity_type2_jacobian.py sha256:6477888fe39c6c68
-#   gravity_type3_jacobian.py sha256:208e1ca0a42ecb00
-#   gravity_type4_jacobian.py sha256:af0d509e8d22d547
-#   gravity_type5_jacobian.py sha256:2cb99786e787ec4a
+#   geyer_jacobian.py sha256:af7590c63bb7e7e7
+#   geyer_vs_jacobian.py sha256:84011f3c01b20ef3
+#   gravity_type0_jacobian.py sha256:af2c73998e6c954f
+#   gravity_type1_jacobian.py sha256:3af59a257dd7e0d5
+#   gravity_type2_jacobian.py sha256:277e5618f2fd2c2e
+#   gravity_type3_jacobian.py sha256:f80d52a2cef45077
+#   gravity_type4_jacobian.py sha256:f7f718bc6fe627c2
+#   gravity_type5_jacobian.py sha256:4ee1dceacbe65816
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -162,10 +162,11 @@ _Lbacdd133 = (np.array([[1.0, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, 
 
 
 @njit(cache=True, error_model="numpy")
-def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        out):
-    """The zeroth iterate 'held': the touchdown state held, the bottom from the radial work, and the
-    derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c.
+def zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -178,7 +179,9 @@ def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c(q_r_td, q_rd_td, q_th_td
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
     Writes into out:
         z_b_q_r: zeroth iterate: z_b_q_r
@@ -187,7 +190,59 @@ def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c(q_r_td, q_rd_td, q_th_td
         z_lo_q_th: zeroth iterate: z_lo_q_th
         z_lo_q_thd: zeroth iterate: z_lo_q_thd
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c (row-major)
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
+    """
+    # Total ops: 0
+    # stance: Geyer et al.'s approximate stance map
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(7), 7)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo,)
+    _o0 = carray(stack(60), 60)
+    _c0 = geyer_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[20], _o0[21], 0.0, _o0[23], _o0[24], 0.0,
+        _o0[30], _o0[31], _o0[32], _o0[33], _o0[34], 0.0, _o0[35], _o0[36], 0.0, _o0[38], _o0[39], 0.0,
+        _o0[50], _o0[51], _o0[52], _o0[53], _o0[54], 0.0, _o0[55], _o0[56], 0.0, _o0[58], _o0[59], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        k_d, g_s, q_r_lo, out):
+    """The zeroth iterate 'held': the touchdown state held, the bottom from the radial work, and the
+    derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c, k_d.
+
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+
+    Writes into out:
+        z_b_q_r: zeroth iterate: z_b_q_r
+        z_b_q_th: zeroth iterate: z_b_q_th
+        z_b_q_thd: zeroth iterate: z_b_q_thd
+        z_lo_q_th: zeroth iterate: z_lo_q_th
+        z_lo_q_thd: zeroth iterate: z_lo_q_thd
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
@@ -235,10 +290,229 @@ def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c(q_r_td, q_rd_td, q_th_td
     # (internal helper: its callers check that their outputs are finite)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29],) = (z_b_q_r, z_b_q_th, z_b_q_thd, 0.0,
-        0.0, d_z_b_q_r__q_r_td, d_z_b_q_r__q_rd_td, d_z_b_q_r__q_th_td, d_z_b_q_r__q_thd_td, d_z_b_q_r__k_c,
-        0.0, 0.0, 1.0, 0.0, 0.0, d_z_b_q_thd__q_r_td, d_z_b_q_thd__q_rd_td, d_z_b_q_thd__q_th_td,
-        d_z_b_q_thd__q_thd_td, d_z_b_q_thd__k_c, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (z_b_q_r, z_b_q_th, z_b_q_thd, 0.0, 0.0, d_z_b_q_r__q_r_td, d_z_b_q_r__q_rd_td,
+        d_z_b_q_r__q_th_td, d_z_b_q_r__q_thd_td, d_z_b_q_r__k_c, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0,
+        d_z_b_q_thd__q_r_td, d_z_b_q_thd__q_rd_td, d_z_b_q_thd__q_th_td, d_z_b_q_thd__q_thd_td,
+        d_z_b_q_thd__k_c, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
+        l0, k_c, k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    """
+    # Total ops: 0
+    # stance: Gravity correction type 0 (leg length l0)
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(11), 11)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0,)
+    _o0 = carray(stack(72), 72)
+    _c0 = gravity_type0_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
+        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
+        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
+        l0, k_c, k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    """
+    # Total ops: 0
+    # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(11), 11)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12,)
+    _o0 = carray(stack(72), 72)
+    _c0 = gravity_type1_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
+        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
+        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
+        l0, k_c, k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    """
+    # Total ops: 0
+    # stance: Gravity correction type 2 (average leg length)
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(12), 12)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12,)
+    _o0 = carray(stack(72), 72)
+    _c0 = gravity_type2_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
+        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
+        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
+        l0, k_c, k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    """
+    # Total ops: 0
+    # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(11), 11)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12,)
+    _o0 = carray(stack(72), 72)
+    _c0 = gravity_type3_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
+        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
+        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
+        l0, k_c, k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    """
+    # Total ops: 0
+    # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(12), 12)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12,)
+    _o0 = carray(stack(72), 72)
+    _c0 = gravity_type4_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
+        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
+        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
+        l0, k_c, k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    """
+    # Total ops: 0
+    # stance: Gravity correction type 5 (time-varying momentum)
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(9), 9)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8],) = (m, l0, k_c, g_s, NAN, q_r_td,
+        q_r_lo, 100.0, 1e-12,)
+    _o0 = carray(stack(72), 72)
+    _c0 = gravity_type5_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
+        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
+        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy")
+def zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
+        k_c, k_d, g_s, q_r_lo, out):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    """
+    # Total ops: 0
+    # stance: Simple variable-stiffness map (Geyer et al. per half)
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(12), 12)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12,)
+    _o0 = carray(stack(91), 91)
+    _c0 = geyer_vs_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[25], _o0[26], _o0[27], _o0[28], _o0[29],
+        _o0[30], _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], _o0[42], _o0[43], _o0[44], _o0[45], _o0[46],
+        _o0[47], _o0[48], _o0[61], _o0[62], _o0[63], _o0[64], _o0[65], _o0[66], _o0[67], _o0[68], _o0[69],
+        _o0[70], _o0[71], _o0[72],)
     return STATUS_OK
 
 
@@ -1707,12 +1981,85 @@ def iterative_core_jvp6_b60fdf(_a, out):
     return STATUS_OK
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def iterative_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac):
+    """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
+    with respect to the touchdown state and the stiffness.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    The body that 8 kernels share, each passing the kernel it calls as zeroth_jac
+    (derive/share.py): iterative_stance_jacobian_zeroth_{geyer, gravity_type0, gravity_type1,
+    gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
+
+    Arguments, returns and status: those of the kernels, then the callees.
+    """
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
+        p[10])
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return fail(out, STATUS_INVALID_INPUT)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+    # zeroth iterate (option zeroth)
+    _o0 = carray(stack(35), 35)
+    _c0 = zeroth_jac(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # the iteration from the zeroth iterate
+    _a1 = carray(stack(49), 49)
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], 0.0, nodes, iterations, tol, _o0[5], _o0[11], _o0[17],
+        _o0[23], _o0[29], _o0[6], _o0[12], _o0[18], _o0[24], _o0[30], _o0[7], _o0[13], _o0[19], _o0[25],
+        _o0[31], _o0[8], _o0[14], _o0[20], _o0[26], _o0[32], _o0[9], _o0[15], _o0[21], _o0[27], _o0[33],
+        _o0[10], _o0[16], _o0[22], _o0[28], _o0[34],)
+    _o1 = carray(stack(77), 77)
+    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    # every output finite, or the inputs were far outside a physical range
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
+        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
+        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
+        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
+        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
+        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
+
+
 @njit(cache=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_geyer(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -1757,64 +2104,8 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Geyer et al.'s approximate stance map
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(7), 7)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo,)
-    _o0 = carray(stack(60), 60)
-    _c0 = geyer_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[20], _o0[30],
-        _o0[35], _o0[50], _o0[55], _o0[21], _o0[31], _o0[36], _o0[51], _o0[56], 0.0, _o0[32], 0.0, _o0[52],
-        0.0, _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], 0.0,
-        0.0, 0.0, 0.0, 0.0,)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2078,12 +2369,79 @@ def iterative_apex_return_jacobian_tail_42d188(_a, out):
     return STATUS_OK
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth):
+    """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
+    with respect to the apex, the touchdown angle and the stiffness.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    The body that 9 kernels share, each passing the kernel it calls as
+    iterative_stance_jacobian_zeroth (derive/share.py):
+    iterative_apex_return_jacobian_zeroth_{geyer, held, gravity_type0, gravity_type1,
+    gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
+
+    Arguments, returns and status: those of the kernels, then the callees.
+    """
+    # Total ops: 1
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
+        p[6], p[7], p[8], p[9], p[10])
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return fail(out, STATUS_INVALID_INPUT)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _o0 = carray(stack(36), 36)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
+        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _x1 = carray(stack(4), 4)
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
+    _o1 = carray(stack(77), 77)
+    _c1 = iterative_stance_jacobian_zeroth(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    # the code shared between choices
+    _a2 = carray(stack(56), 56)
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
+        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
+        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
+        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
+        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
+        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
+        _o0[2],)
+    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
+    if _status == STATUS_OK and not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return _status
+
+
 @njit(cache=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_geyer(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_geyer.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -2139,54 +2497,8 @@ def iterative_apex_return_jacobian_zeroth_geyer(x, p, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_geyer(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_geyer)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2225,10 +2537,10 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: held
-    _o0 = carray(stack(30), 30)
-    _c0 = (zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
-        g_s, _o0))
+    # zeroth iterate (option zeroth)
+    _o0 = carray(stack(35), 35)
+    _c0 = (zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
+        k_c, k_d, g_s, q_r_lo, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
@@ -2238,9 +2550,10 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
         _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
         _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
         _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], 1.0, nodes, iterations, tol, _o0[5], 0.0, _o0[15],
-        0.0, 0.0, _o0[6], 0.0, _o0[16], 0.0, 0.0, _o0[7], _o0[12], _o0[17], 0.0, 0.0, _o0[8], 0.0, _o0[18],
-        0.0, 0.0, _o0[9], 0.0, _o0[19], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
+        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], 1.0, nodes, iterations, tol, _o0[5], _o0[11], _o0[17],
+        _o0[23], _o0[29], _o0[6], _o0[12], _o0[18], _o0[24], _o0[30], _o0[7], _o0[13], _o0[19], _o0[25],
+        _o0[31], _o0[8], _o0[14], _o0[20], _o0[26], _o0[32], _o0[9], _o0[15], _o0[21], _o0[27], _o0[33],
+        _o0[10], _o0[16], _o0[22], _o0[28], _o0[34],)
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
@@ -2280,56 +2593,13 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_held.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_held(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_held)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2348,68 +2618,14 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+
     Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 0 (leg length l0)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_type0_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32],
-        _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39],
-        _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56],
-        _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2429,56 +2645,14 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_gravity_type0.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_gravity_type0(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
+        iterative_stance_jacobian_zeroth_gravity_type0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2498,68 +2672,14 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+
     Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_type1_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32],
-        _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39],
-        _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56],
-        _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2579,56 +2699,14 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_gravity_type1.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_gravity_type1(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
+        iterative_stance_jacobian_zeroth_gravity_type1))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2648,68 +2726,14 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+
     Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 2 (average leg length)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_type2_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32],
-        _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39],
-        _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56],
-        _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2729,56 +2753,14 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_gravity_type2.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_gravity_type2(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
+        iterative_stance_jacobian_zeroth_gravity_type2))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2798,68 +2780,14 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+
     Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_type3_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32],
-        _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39],
-        _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56],
-        _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2879,56 +2807,14 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_gravity_type3.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_gravity_type3(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
+        iterative_stance_jacobian_zeroth_gravity_type3))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2948,68 +2834,14 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+
     Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_type4_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32],
-        _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39],
-        _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56],
-        _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -3029,56 +2861,14 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_gravity_type4.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_gravity_type4(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
+        iterative_stance_jacobian_zeroth_gravity_type4))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -3098,68 +2888,14 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+
     Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(9), 9)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8],) = (m, l0, k_c, g_s, NAN, q_r_td,
-        q_r_lo, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_type5_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32],
-        _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39],
-        _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56],
-        _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -3179,56 +2915,14 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_gravity_type5.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_gravity_type5(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
+        iterative_stance_jacobian_zeroth_gravity_type5))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -3248,68 +2942,14 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+
     Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12,)
-    _o0 = carray(stack(91), 91)
-    _c0 = geyer_vs_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[25], _o0[37],
-        _o0[43], _o0[61], _o0[67], _o0[26], _o0[38], _o0[44], _o0[62], _o0[68], _o0[27], _o0[39], _o0[45],
-        _o0[63], _o0[69], _o0[28], _o0[40], _o0[46], _o0[64], _o0[70], _o0[29], _o0[41], _o0[47], _o0[65],
-        _o0[71], _o0[30], _o0[42], _o0[48], _o0[66], _o0[72],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -3328,56 +2968,13 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
+    iterative_stance_jacobian_zeroth_geyer_vs.
+
     Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
-    # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _o0 = carray(stack(36), 36)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_apex, b_xd_apex,
-        q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_stance_jacobian_zeroth_geyer_vs(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # the code shared between choices
-    _a2 = carray(stack(56), 56)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54], _a2[55],
-        ) = (_o0[32], _o0[31], _o0[34], _o0[33], _o0[35], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56],
-        _o1[63], _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[26],
-        _o0[29], _o0[28], _o0[30], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[12], _o0[11], _o0[14],
-        _o0[13], _o0[15], _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25],
-        b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o0[4], _o1[1],
-        _o0[2],)
-    _status = iterative_apex_return_jacobian_tail_42d188(_a2, out)
-    if _status == STATUS_OK and not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return _status
+    # Total ops: 0
+    return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_geyer_vs)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

@@ -8,15 +8,8 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:4670e2b1039b4330
-#   geyer.py sha256:d4de65ad7b7743ae
 #   geyer_vs.py sha256:2938ab68f64ec8b9
-#   gravity_type0.py sha256:aeeaedd4e957536b
-#   gravity_type1.py sha256:0c9da4f0c6ce0a10
-#   gravity_type2.py sha256:a9520b2072c5248a
-#   gravity_type3.py sha256:f6ec00956f584345
-#   gravity_type4.py sha256:0434fb7f17ccb53b
-#   gravity_type5.py sha256:98f4266d17071a0b
-#   iterative.py sha256:4337c496c76156d9
+#   iterative.py sha256:62e44891ccf3c0c2
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -28,15 +21,9 @@ from numba import carray, njit
 
 from .support import fail, finite, into_rows, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
-from .geyer import geyer_stance
-from .geyer_vs import bottom_quartic, geyer_vs_stance
-from .gravity_type0 import gravity_type0_stance
-from .gravity_type1 import gravity_type1_stance
-from .gravity_type2 import gravity_type2_stance
-from .gravity_type3 import gravity_type3_stance
-from .gravity_type4 import gravity_type4_stance
-from .gravity_type5 import gravity_type5_stance
-from .iterative import zeroth_held
+from .geyer_vs import bottom_quartic
+from .iterative import (zeroth_geyer, zeroth_geyer_vs, zeroth_gravity_type0, zeroth_gravity_type1,
+    zeroth_gravity_type2, zeroth_gravity_type3, zeroth_gravity_type4, zeroth_gravity_type5, zeroth_held)
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -354,6 +341,78 @@ def report_core(_a):
         liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def iterative_report_stance_zeroth_shared(x, p, out, zeroth):
+    """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+
+    The body that 8 kernels share, each passing the kernel it calls as zeroth (derive/share.py):
+    iterative_report_stance_zeroth_{geyer, gravity_type0, gravity_type1, gravity_type2,
+    gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
+
+    Arguments, returns and status: those of the kernels, then the callees.
+    """
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
+        p[8], p[9], p[10])
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+        return fail(out, STATUS_INVALID_INPUT)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+    # zeroth iterate (option zeroth)
+    _c0 = zeroth(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo)
+    if _c0[5] != STATUS_OK:
+        return fail(out, _c0[5])
+    z_b_q_r = _c0[0]
+    z_b_q_th = _c0[1]
+    z_b_q_thd = _c0[2]
+    z_lo_q_th = _c0[3]
+    z_lo_q_thd = _c0[4]
+    # the iteration from the zeroth iterate
+    _a1 = carray(stack(19), 19)
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, 0.0, variant,
+        iterations, bottom_length,)
+    _c1 = report_core(_a1)
+    if _c1[10] != STATUS_OK:
+        return fail(out, _c1[10])
+    t_bottom = _c1[0]
+    t_stance = _c1[1]
+    bottom_q_r = _c1[2]
+    bottom_q_rd = _c1[3]
+    bottom_q_th = _c1[4]
+    bottom_q_thd = _c1[5]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
+    return STATUS_OK
+
+
 @njit(cache=True, error_model="numpy")
 def iterative_report_stance_zeroth_geyer(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
@@ -362,6 +421,8 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_geyer.
 
     (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
     liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
@@ -403,60 +464,7 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Geyer et al.'s approximate stance map
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(7), 7)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo,)
-    _o0 = carray(stack(10), 10)
-    _c0 = geyer_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_geyer)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -468,6 +476,85 @@ def iterative_report_stance_zeroth_geyer_rows(X, P, OUT, STATUS):
         STATUS[i] = iterative_report_stance_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+
+    The body that 9 kernels share, each passing the kernel it calls as
+    iterative_report_stance_zeroth (derive/share.py):
+    iterative_report_apex_return_zeroth_{geyer, held, gravity_type0, gravity_type1,
+    gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
+
+    Arguments, returns and status: those of the kernels, then the callees.
+    """
+    # Total ops: 3
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
+        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
+            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+        return fail(out, STATUS_INVALID_INPUT)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
+    if _c0[6] != STATUS_OK:
+        return fail(out, _c0[6])
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, as printed)
+    _x1 = carray(stack(4), 4)
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
+    _o1 = carray(stack(10), 10)
+    _c1 = iterative_report_stance_zeroth(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return fail(out, _c2[5])
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    touchdown_q_th = td_q_th
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(touchdown_q_th)):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
+    return STATUS_OK
+
+
 @njit(cache=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_geyer(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
@@ -475,6 +562,9 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_geyer.
 
     Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
@@ -523,68 +613,8 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_geyer(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_geyer)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -624,8 +654,8 @@ def iterative_report_stance_zeroth_held(x, p, out):
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: held
-    _c0 = zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s)
+    # zeroth iterate (option zeroth)
+    _c0 = zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo)
     if _c0[5] != STATUS_OK:
         return fail(out, _c0[5])
     z_b_q_r = _c0[0]
@@ -681,70 +711,13 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_held.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_held(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_held)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -765,64 +738,13 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
+    zeroth_gravity_type0.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 0 (leg length l0)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0,)
-    _o0 = carray(stack(12), 12)
-    _c0 = gravity_type0_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -842,70 +764,13 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_gravity_type0.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_gravity_type0(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -927,64 +792,13 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
+    zeroth_gravity_type1.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12,)
-    _o0 = carray(stack(12), 12)
-    _c0 = gravity_type1_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type1)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1004,70 +818,13 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_gravity_type1.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_gravity_type1(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type1)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1089,64 +846,13 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
+    zeroth_gravity_type2.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 2 (average leg length)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12,)
-    _o0 = carray(stack(12), 12)
-    _c0 = gravity_type2_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type2)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1166,70 +872,13 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_gravity_type2.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_gravity_type2(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type2)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1251,64 +900,13 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
+    zeroth_gravity_type3.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12,)
-    _o0 = carray(stack(12), 12)
-    _c0 = gravity_type3_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1328,70 +926,13 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_gravity_type3.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_gravity_type3(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1413,64 +954,13 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
+    zeroth_gravity_type4.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12,)
-    _o0 = carray(stack(12), 12)
-    _c0 = gravity_type4_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type4)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1490,70 +980,13 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_gravity_type4.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_gravity_type4(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type4)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1575,64 +1008,13 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
+    zeroth_gravity_type5.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(9), 9)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8],) = (m, l0, k_c, g_s, NAN, q_r_td,
-        q_r_lo, 100.0, 1e-12,)
-    _o0 = carray(stack(12), 12)
-    _c0 = gravity_type5_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type5)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1652,70 +1034,13 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_gravity_type5.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_gravity_type5(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type5)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1737,64 +1062,12 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_geyer_vs.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12,)
-    _o0 = carray(stack(13), 13)
-    _c0 = geyer_vs_stance(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
-        bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_geyer_vs)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1814,70 +1087,13 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
+    iterative_report_stance_zeroth_geyer_vs.
+
     Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
-    # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
-    if _c0[6] != STATUS_OK:
-        return fail(out, _c0[6])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
-    _o1 = carray(stack(10), 10)
-    _c1 = iterative_report_stance_zeroth_geyer_vs(_x1, p, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
-    if _c2[5] != STATUS_OK:
-        return fail(out, _c2[5])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    foot_y = -b_y_apex + ground
-    touchdown_q_th = td_q_th
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
-    return STATUS_OK
+    # Total ops: 0
+    return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_geyer_vs)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

@@ -85,6 +85,7 @@ __all__ = [
     "zeroth_option",
     "zeroth_bottom",
     "held_kernel",
+    "zeroth_kernel",
     "held_liftoff",
     "zeroth_arguments",
     "zeroth_values",
@@ -391,7 +392,7 @@ def held_kernel() -> Kernel:
     call, and the iteration's kernels are one for all of them): the bottom from p_r_td^2 = 2 m F_r(td)
     D + k_c D^2, the touchdown angle and angular momentum held; the liftoff is the held bottom's,
     taken after the compression half (:func:`zeroth_liftoff`, flag ``held``)."""
-    from ..catalog import PARAMS, TOUCHDOWN
+    from ..catalog import TOUCHDOWN
 
     q_r_td, q_rd_td, q_th_td, q_thd_td = (a.symbol for a in TOUCHDOWN)
     p_td = m * q_r_td**2 * q_thd_td
@@ -402,7 +403,7 @@ def held_kernel() -> Kernel:
         name="zeroth_held",
         summary="The zeroth iterate 'held': the touchdown state held, the bottom from the radial work.",
         equations=(),
-        args=TOUCHDOWN + tuple(PARAMS[n] for n in ("m", "l0", "k_c", "g_s")),
+        args=_zeroth_args(),
         steps=(
             Stage(
                 (
@@ -419,32 +420,72 @@ def held_kernel() -> Kernel:
         module="iterative",
         check_inputs=False,
         check_outputs=False,
+        dense_tangent=True,
+    )
+
+
+#: The parameters every zeroth iterate's kernel takes (after the touchdown state), used or not.
+_ZEROTH_PARAMS = ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo")
+
+
+def _zeroth_args() -> tuple[Arg, ...]:
+    from ..catalog import PARAMS, TOUCHDOWN
+
+    return TOUCHDOWN + tuple(PARAMS[n] for n in _ZEROTH_PARAMS)
+
+
+@cache
+def zeroth_kernel(name: str) -> Kernel:
+    """The zeroth iterate of choice ``name`` (:func:`zeroth_option`) as a kernel of the touchdown
+    state and :data:`_ZEROTH_PARAMS` returning :data:`ZEROTH_OUTPUTS`: :func:`held_kernel`, or a call
+    of the map's stance at its default options with the stiffness k_c (k_d as given). Every choice's
+    kernel has the same arguments and outputs, and its callers read all of its derivatives
+    (``dense_tangent``): the iterative maps' kernels of two choices differ in this callee only, and
+    share one body (derive/share.py)."""
+    if name == HELD:
+        return held_kernel()
+    spec = next(s for s in zeroth_maps() if s.name == name)
+    args = _zeroth_args()
+    touchdown = tuple(a.symbol for a in args[:4])
+    p = {a.name: a.symbol for a in args[4:]}
+    bind = {f"bottom_{q}": f"z_b_{q}" for q in ("q_r", "q_th", "q_thd")}
+    bind.update({f"liftoff_{q}": f"z_lo_{q}" for q in ("q_th", "q_thd")})
+    return Kernel(
+        name=f"zeroth_{spec.ident}",
+        # (one summary for every map's: their docstrings are written once, derive/generate.py)
+        summary="A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states "
+        "with the stiffness k_c.",
+        equations=(),
+        args=args,
+        steps=(spec.stance_call(touchdown, {**p, "k": p["k_c"]}, bind, comment=f"stance: {spec.title}"),),
+        outputs=Group("", tuple(Field(n, f"zeroth iterate: {n}") for n in ZEROTH_OUTPUTS)),
+        module="iterative",
+        check_inputs=False,
+        check_outputs=False,
+        dense_tangent=True,
     )
 
 
 def zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
     """The zeroth iterate (:data:`ZEROTH_OUTPUTS`) from the touchdown state, before the compression
-    half: a call of the chosen map's stance at its default options with the stiffness k_c (q_r_lo
-    as given: a compression half passes q_r_td, as only the bottom is used), or of
-    :func:`held_kernel`. A choice's kernels differ in this call only."""
+    half: a call of the choice's :func:`zeroth_kernel` (q_r_lo as given: a compression half passes
+    q_r_td, as only the bottom is used). A choice's kernels differ in this callee only (and the
+    held choice's in its flag ``held``): derive/share.py renders their code once."""
     zeroth = zeroth_option()
-    given = {**p, "k": p["k_c"], "k_d": p.get("k_d", p["k_c"]), "q_r_lo": q_r_lo}
-    bind = {f"bottom_{q}": f"z_b_{q}" for q in ("q_r", "q_th", "q_thd")}
-    bind.update({f"liftoff_{q}": f"z_lo_{q}" for q in ("q_th", "q_thd")})
-    held = held_kernel()
-    names = [a.name for a in held.args]
-    held_args = dict(zip(names, (*touchdown, p["m"], p["l0"], p["k_c"], p["g_s"]), strict=True))
-    from_maps = tuple(
+    given = {**p, "k_d": p.get("k_d", p["k_c"]), "q_r_lo": q_r_lo}
+    args = {
+        a.name: x
+        for a, x in zip(_zeroth_args(), (*touchdown, *(given[n] for n in _ZEROTH_PARAMS)), strict=True)
+    }
+    bind = {n: n for n in ZEROTH_OUTPUTS}
+    cases = tuple(
         (
-            zeroth.code(spec.name),
-            (spec.stance_call(touchdown, given, bind, comment=f"zeroth iterate: {spec.title}"),),
+            zeroth.code(name),
+            (Call(zeroth_kernel(name), args, bind, comment="zeroth iterate (option zeroth)"),),
         )
-        for spec in zeroth_maps()
+        for name in (HELD, *(s.name for s in zeroth_maps()))
     )
-    call_held = Call(held, held_args, {n: n for n in ZEROTH_OUTPUTS}, comment="zeroth iterate: held")
-    return Switch(
-        sym(zeroth.name), ((zeroth.code(HELD), (call_held,)),) + from_maps, comment="zeroth iterate"
-    )
+    return Switch(sym(zeroth.name), cases, comment="zeroth iterate")
 
 
 def zeroth_arguments() -> tuple[Arg, ...]:

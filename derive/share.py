@@ -1,0 +1,184 @@
+"""Shared bodies: the kernels of a module that differ only in the kernels they call become thin
+entry points of one body that takes those callees as arguments.
+
+A specialized option (:mod:`.specialize`) gives each of its choices kernels of their own, so that a
+first call compiles only the callees of the choice it runs. Many of those kernels are the same code
+but for their callees' names: the iterative maps' apex-return kernels differ only in the stance
+kernel of their zeroth iterate. :func:`share_bodies` finds them among a module's lowered kernels
+(:func:`.lower.lower`): it renders the body once, as ``<common prefix>_shared`` with the differing
+callees as trailing arguments, and makes each kernel an entry point that returns the shared body's
+result for its own callees. The shared body is inlined at numba's IR level into each entry point
+(``inline="always"``), where its callee arguments are the entry point's constants: each entry point
+compiles to the code its kernel compiled to before, on its choice's first call, and is cached as any
+kernel is. (Not inlined, a compiled function taking a function argument is passed the dispatcher's
+address, and numba does not cache code that holds an address: measured, "uses dynamic globals".)
+
+The kernels keep their names, signatures, layouts, docstrings and batch forms: the index, the
+runtime and the tests call them as before. A shared body is not a kernel of the index (no batch
+form, no declaration): its name ends with ``_shared`` (:data:`SUFFIX`).
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import os
+import re
+
+__all__ = ["SUFFIX", "share_bodies"]
+
+_WORD = re.compile(r"[A-Za-z_]\w*")
+
+#: The name suffix of every shared body (tests tell them from the declared kernels by it).
+SUFFIX = "_shared"
+
+#: A lowered kernel's fields that describe it without shaping its code (docstring, statistics).
+_DOC_FIELDS = frozenset(
+    {"name", "summary", "equations", "notes", "args", "doc_args", "returns", "ops", "callees", "called"}
+)
+#: The fields whose strings are code (the callees' names are replaced there in a shared body).
+_CODE_FIELDS = ("params", "prologue", "input_guard", "body", "store", "finite_chain", "outputs")
+
+
+def _pattern(names) -> re.Pattern | None:
+    names = sorted(names, key=len, reverse=True)
+    return re.compile(r"\b(" + "|".join(map(re.escape, names)) + r")\b") if names else None
+
+
+def _key(k: dict) -> tuple[str, list[str]]:
+    """The kernel's code with its callees' names replaced by their order of first use, and that
+    order: two kernels of the same key differ only in the callees they call."""
+    text = json.dumps({f: v for f, v in k.items() if f not in _DOC_FIELDS}, sort_keys=True, default=repr)
+    order: list[str] = []
+
+    def number(m: re.Match) -> str:
+        if m.group(0) not in order:
+            order.append(m.group(0))
+        return f"\x00{order.index(m.group(0))}\x00"
+
+    pattern = _pattern(k["called"])
+    return (pattern.sub(number, text) if pattern else text), order
+
+
+def _common_prefix(names) -> str:
+    prefix = os.path.commonprefix(list(names))
+    return prefix[: prefix.rfind("_")] if "_" in prefix else ""
+
+
+def _common_suffix(names) -> str:
+    suffix = os.path.commonprefix([n[::-1] for n in names])[::-1]
+    return suffix[suffix.find("_") + 1 :] if "_" in suffix else ""
+
+
+def _names(names: list[str]) -> str:
+    """``a_b_{c, d}`` for ``a_b_c, a_b_d``: names by their common prefix."""
+    prefix = _common_prefix(names)
+    if not prefix:
+        return ", ".join(names)
+    return prefix + "_{" + ", ".join(n[len(prefix) + 1 :] for n in names) + "}"
+
+
+def _words(value) -> set[str]:
+    """The identifiers of a lowered kernel's code (its comments and guard notes left out)."""
+    if isinstance(value, str):
+        return set(_WORD.findall(value))
+    if isinstance(value, list):
+        return set().union(*(_words(v) for v in value))
+    if isinstance(value, dict):
+        return set().union(*(_words(v) for f, v in value.items() if f not in ("text", "doc")))
+    return set()
+
+
+def _argument_names(columns: list[tuple[str, ...]], taken: set[str]) -> list[str]:
+    """A readable argument name for each varying callee: its choices' common prefix, then the first
+    word of their common suffix (``zeroth``, ``zeroth_jac``), unique and not a name ``taken``."""
+    out: list[str] = []
+    for i, names in enumerate(columns):
+        words = [w for w in (_common_prefix(names), _common_suffix(names).split("_")[0]) if w]
+        name = "_".join(words)
+        if not name.isidentifier() or name in taken or name in out:
+            name = f"callee{i}"
+        out.append(name)
+    return out
+
+
+def _replace(value, pattern: re.Pattern, names: dict[str, str]):
+    if isinstance(value, str):
+        return pattern.sub(lambda m: names[m.group(0)], value)
+    if isinstance(value, list):
+        return [_replace(v, pattern, names) for v in value]
+    if isinstance(value, dict):
+        return {f: _replace(v, pattern, names) for f, v in value.items()}
+    return value
+
+
+def share_bodies(kernels: list[dict], inline: set[str]) -> list[dict]:
+    """``kernels`` (one module's, lowered) with every group of two or more that differ only in their
+    callees rendered as one shared body and an entry point per kernel. ``inline`` names the kernels
+    numba inlines at their call sites (never passed as an argument). Deterministic: groups, names
+    and arguments follow the kernels' order."""
+    taken = {k["name"] for k in kernels}
+    for k in kernels:
+        taken |= set(k["called"])
+    groups: dict[str, list[tuple[dict, list[str]]]] = {}
+    for k in kernels:
+        if k["inline"] or k["inline_rows"]:
+            continue
+        key, order = _key(k)
+        groups.setdefault(key, []).append((k, order))
+    bodies: dict[str, dict] = {}
+    entries: dict[str, dict] = {}
+    for members in groups.values():
+        if len(members) < 2:
+            continue
+        columns = list(zip(*(order for _, order in members), strict=True))
+        varying = [i for i, column in enumerate(columns) if len(set(column)) > 1]
+        if not varying or any(n in inline for i in varying for n in columns[i]):
+            continue
+        first = members[0][0]
+        base = _common_prefix(k["name"] for k, _ in members) or first["name"]
+        name = base + SUFFIX
+        while name in taken:
+            name += "_"
+        taken.add(name)
+        arguments = _argument_names(
+            [columns[i] for i in varying], taken | _words({f: first[f] for f in _CODE_FIELDS})
+        )
+        own = dict(zip((columns[i][0] for i in varying), arguments, strict=True))
+        body = copy.deepcopy(first)
+        body.update(_replace({f: first[f] for f in _CODE_FIELDS}, _pattern(own), own))
+        body.update(
+            name=name,
+            params=body["params"] + ", " + ", ".join(arguments),
+            callees=[c for c in first["callees"] if c[1] not in own],
+            shared_by=[k["name"] for k, _ in members],
+            shared_names=_names([k["name"] for k, _ in members]),
+            shared_args=arguments,
+            ops=first["ops"],
+            # inlined at numba's IR level into each entry point: a function argument is a constant
+            # there; passed to a compiled function it is an address numba's cache cannot keep
+            inline=True,
+        )
+        bodies[first["name"]] = body
+        for k, order in members:
+            passed = [order[i] for i in varying]
+            entry = dict(k)
+            entry.update(
+                body=[{"kind": "return", "code": f"{name}({k['params']}, {', '.join(passed)})"}],
+                prologue=[],
+                input_guard=None,
+                arrays=[],
+                rows=0,
+                tail=True,
+                ops=0,
+                callees=[c for c in k["callees"] if c[1] in passed],
+                entry_of=name,
+                passes=passed,
+            )
+            entries[k["name"]] = entry
+    out: list[dict] = []
+    for k in kernels:
+        if k["name"] in bodies:
+            out.append(bodies[k["name"]])
+        out.append(entries.get(k["name"], k))
+    return out
