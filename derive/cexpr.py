@@ -117,6 +117,10 @@ class _Printer:
                 power = _powi(b, inner.value)
                 return f"(1.0/{power})" if neg else f"({power})"
             return f"pow({base}, {self.expr(exp)})"
+        if isinstance(node.op, ast.BitAnd):
+            # the kernels' checks join truth values with & (one expression for numba); C's isfinite
+            # is nonzero, not 1, when true: &&
+            return f"({self.expr(node.left)} && {self.expr(node.right)})"
         op = _BIN.get(type(node.op))
         if op is None:
             raise CPrintError(f"no C for the operator in {ast.unparse(node)!r}")

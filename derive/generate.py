@@ -354,8 +354,7 @@ def build_files() -> dict[str, str]:
     mods = modules()
     check_module_names(mods)
     lowered = {mod.name: [lower(k) for k in mod.kernels()] for mod in mods}
-    inline = {k["name"] for ks in lowered.values() for k in ks if k["inline"]}
-    lowered = {name: share_bodies(ks, inline) for name, ks in lowered.items()}
+    lowered = {name: share_bodies(ks) for name, ks in lowered.items()}
     files[f"generated/{SUPPORT_MODULE}.py"] = wrap(
         render(
             "support.py.j2",

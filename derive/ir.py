@@ -360,7 +360,8 @@ class Kernel:
     #: check their own outputs may skip it (``check_outputs=False``).
     check_outputs: bool = True
     #: Inline into every caller at numba's IR level (``njit(inline="always")``): a map's stance kernel
-    #: when its MapSpec opts in (``MapSpec.inline``), so its batch loop runs straight-line code.
+    #: when its MapSpec opts in (``MapSpec.inline``), so its batch loop runs straight-line code; the
+    #: iterative maps' zeroth iterates (and, an internal kernel, its derivatives: derive/tangent.py).
     inline: bool = False
     #: A role kernel inlined at numba's IR level into its own batch form only (``support.into_rows``):
     #: the kernels of a map whose MapSpec opts in (``MapSpec.inline``) and their Jacobians.

@@ -299,12 +299,12 @@ FINITE_CHAIN = 24
 
 
 def _finite_chain(codes: list[str], limit: int | None = FINITE_CHAIN) -> str | None:
-    """``math.isfinite(c0) and math.isfinite(c1) ...`` over the distinct codes that are not numbers,
+    """``math.isfinite(c0) & math.isfinite(c1) ...`` over the distinct codes that are not numbers,
     or None when there are more than ``limit`` of them (None: no limit)."""
     names = list(dict.fromkeys(c for c in codes if not re.fullmatch(r"-?[0-9.]+(e-?[0-9]+)?", c)))
     if limit is not None and len(names) > limit:
         return None
-    return " and ".join(f"math.isfinite({c})" for c in names) or "True"
+    return " & ".join(f"math.isfinite({c})" for c in names) or "True"
 
 
 def _passes_p(ctx: _Ctx, call: Call) -> bool:
@@ -882,7 +882,10 @@ def lower(kernel: Kernel) -> dict:
         for a in kernel.args:
             if a.domain is not None:
                 ctx.require(a.domain, f"domain of argument {a.name}")
-        input_guard = " and ".join(conds)
+        # one expression, no short-circuit: numba makes a block of every operand of ``and``, and
+        # a block costs compile time (inlining copies every block with the function's scope)
+        # (every operand a call or parenthesized: ``&`` binds tighter than a comparison)
+        input_guard = " & ".join(conds)
         ctx.statuses.add("INVALID_INPUT")
     body = _lower_steps(ctx, kernel.steps)
     forward = _forward(body)

@@ -11,7 +11,9 @@ result for its own callees. The shared body is inlined at numba's IR level into 
 (``inline="always"``), where its callee arguments are the entry point's constants: each entry point
 compiles to the code its kernel compiled to before, on its choice's first call, and is cached as any
 kernel is. (Not inlined, a compiled function taking a function argument is passed the dispatcher's
-address, and numba does not cache code that holds an address: measured, "uses dynamic globals".)
+address, and numba does not cache code that holds an address: measured, "uses dynamic globals".) A
+callee argument that is itself ``inline="always"`` is inlined into the entry point as well (numba
+resolves the argument to the entry point's global before it inlines).
 
 The kernels keep their names, signatures, layouts, docstrings and batch forms: the index, the
 runtime and the tests call them as before. A shared body is not a kernel of the index (no batch
@@ -112,11 +114,11 @@ def _replace(value, pattern: re.Pattern, names: dict[str, str]):
     return value
 
 
-def share_bodies(kernels: list[dict], inline: set[str]) -> list[dict]:
+def share_bodies(kernels: list[dict]) -> list[dict]:
     """``kernels`` (one module's, lowered) with every group of two or more that differ only in their
-    callees rendered as one shared body and an entry point per kernel. ``inline`` names the kernels
-    numba inlines at their call sites (never passed as an argument). Deterministic: groups, names
-    and arguments follow the kernels' order."""
+    callees rendered as one shared body and an entry point per kernel. A callee numba inlines
+    (``inline="always"``: the iterative maps' zeroth iterates) is inlined through the argument too.
+    Deterministic: groups, names and arguments follow the kernels' order."""
     taken = {k["name"] for k in kernels}
     for k in kernels:
         taken |= set(k["called"])
@@ -133,7 +135,7 @@ def share_bodies(kernels: list[dict], inline: set[str]) -> list[dict]:
             continue
         columns = list(zip(*(order for _, order in members), strict=True))
         varying = [i for i, column in enumerate(columns) if len(set(column)) > 1]
-        if not varying or any(n in inline for i in varying for n in columns[i]):
+        if not varying:
             continue
         first = members[0][0]
         base = _common_prefix(k["name"] for k, _ in members) or first["name"]

@@ -27,7 +27,7 @@ import tokenize
 LIMIT = 110
 
 #: Operators a line breaks before by preference (a sum's terms, a condition's clauses).
-_BINARY = {"+", "-", "and", "or", "if", "else", "==", "!=", "<", "<=", ">", ">="}
+_BINARY = {"+", "-", "&", "|", "and", "or", "if", "else", "==", "!=", "<", "<=", ">", ">="}
 _OPEN, _CLOSE = "([{", ")]}"
 
 

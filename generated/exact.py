@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   exact_stance.py sha256:299560de25340ae1
-#   flight.py sha256:4670e2b1039b4330
+#   flight.py sha256:af2637d59c8ab493
 # ----------------------------------------------------------------------------------------------
 """Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return
 kernels."""
@@ -72,13 +72,12 @@ def exact_stance(x, p, out):
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
     (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(rtol)
-            and math.isfinite(atol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
-            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((rtol >= 1e-14) and (rtol <= 0.001))
-            and ((atol >= 1e-16) and (atol <= 0.001))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol)
+            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact stance (exact_stance)
     _c0 = stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)
@@ -95,10 +94,10 @@ def exact_stance(x, p, out):
     liftoff_q_th = _c0[8]
     liftoff_q_thd = _c0[9]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
+            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
+            & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
@@ -152,13 +151,13 @@ def exact_state_at(x, p, out):
     (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
     (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9])
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(rtol)
-            and math.isfinite(atol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((rtol >= 1e-14) and (rtol
-            <= 0.001)) and ((atol >= 1e-16) and (atol <= 0.001))):
+    if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
+            & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c)
+            & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(rtol)
+            & math.isfinite(atol) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16)
+            and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact state at t (exact_stance)
     _c0 = state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)
@@ -169,7 +168,7 @@ def exact_state_at(x, p, out):
     q_th = _c0[2]
     q_thd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     return STATUS_OK
@@ -240,14 +239,14 @@ def exact_apex_return(x, p, out):
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7],
         p[8], p[9])
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(rtol)
-            and math.isfinite(atol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((rtol
-            >= 1e-14) and (rtol <= 0.001)) and ((atol >= 1e-16) and (atol <= 0.001))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
+            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
+            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol)
+            & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c
+            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16)
+            and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -285,11 +284,11 @@ def exact_apex_return(x, p, out):
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
+    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
+            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
+            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
+            & math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,

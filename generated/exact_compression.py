@@ -63,12 +63,12 @@ def exact_compression(x, p, out):
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
     (m, l0, k_c, g_s, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(rtol) and math.isfinite(atol)
-            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0))
-            and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((rtol >= 1e-14) and (rtol <= 0.001)) and ((atol >= 1e-16) and (atol <= 0.001))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
+            & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol) & ((q_r_td <= l0) and (q_r_td
+            > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s
+            > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol
+            >= 1e-16) and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact half (exact_stance)
     _c0 = compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol)
@@ -80,8 +80,8 @@ def exact_compression(x, p, out):
     end_q_th = _c0[3]
     end_q_thd = _c0[4]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
+            & math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK

@@ -54,10 +54,10 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
     """
     # Total ops: 63
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground)
-            and math.isfinite(retraction_rate) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(q_r_td) & math.isfinite(g_f) & math.isfinite(ground)
+            & math.isfinite(retraction_rate) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((q_r_td > 0.0)) & ((g_f > 0.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
     # the foot above the touchdown ground at the apex
@@ -134,8 +134,8 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
     t_flight = t_td
     foot_x = b_xd_apex*t_td + q_r_td*sin_td
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th)
-            and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(foot_x)):
+    if not (math.isfinite(touchdown_q_r) & math.isfinite(touchdown_q_rd) & math.isfinite(touchdown_q_th)
+            & math.isfinite(touchdown_q_thd) & math.isfinite(t_flight) & math.isfinite(foot_x)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, STATUS_OK)
 
@@ -164,9 +164,9 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction):
     """
     # Total ops: 20
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
-            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
+            & math.isfinite(g_f) & math.isfinite(direction) & ((q_r > 0.0)) & ((g_f > 0.0)) & ((direction
+            == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -193,7 +193,7 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction):
     dx_flight = _x6
     apex_b_x = _x6 + b_x
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight)
-            and math.isfinite(dx_flight) and math.isfinite(apex_b_x)):
+    if not (math.isfinite(apex_b_y) & math.isfinite(apex_b_xd) & math.isfinite(t_flight)
+            & math.isfinite(dx_flight) & math.isfinite(apex_b_x)):
         return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, STATUS_OK)

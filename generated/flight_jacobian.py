@@ -249,10 +249,10 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
     """
     # Total ops: 95
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground)
-            and math.isfinite(retraction_rate) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(q_r_td) & math.isfinite(g_f) & math.isfinite(ground)
+            & math.isfinite(retraction_rate) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((q_r_td > 0.0)) & ((g_f > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
     d_drop__q_th_td = q_r_td*math.sin(q_th_td)
@@ -421,9 +421,9 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, 
     """
     # Total ops: 50
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
-            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
+            & math.isfinite(g_f) & math.isfinite(direction) & ((q_r > 0.0)) & ((g_f > 0.0)) & ((direction
+            == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -525,9 +525,9 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     """
     # Total ops: 64
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
-            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
+            & math.isfinite(g_f) & math.isfinite(direction) & ((q_r > 0.0)) & ((g_f > 0.0)) & ((direction
+            == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)

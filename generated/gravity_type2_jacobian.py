@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:72dc6cc8c85fe100
-#   geyer_jacobian.py sha256:af7590c63bb7e7e7
+#   flight_jacobian.py sha256:6484d7d4c51d3864
+#   geyer_jacobian.py sha256:54d97ba3c74440a2
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type2: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -88,16 +88,15 @@ def gravity_type2_stance_jacobian(x, p, out):
     (m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol) = (p[0], p[1], p[2], p[3], p[6],
         p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
-            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
-            and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
-            <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples
-            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0)
-            or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
+            & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
+            & math.isfinite(leg_length) & math.isfinite(iterations) & math.isfinite(tol) & ((q_r_td <= l0)
+            and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0))
+            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0))
+            & ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) & ((leg_length
+            == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -743,18 +742,17 @@ def gravity_type2_apex_return_jacobian(x, p, out):
     (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol) = (p[0], p[1], p[2],
         p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f)
-            and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading)
-            and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading
-            == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0))
-            and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
+            & math.isfinite(k) & math.isfinite(g_s) & math.isfinite(g_f) & math.isfinite(q_r_td)
+            & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
+            & math.isfinite(leg_length) & math.isfinite(iterations) & math.isfinite(tol) & ((b_y_apex >= 0.0))
+            & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0))
+            & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((reading == 0.0) or (reading == 1.0)) & ((samples == math.floor(samples)) and (samples >= 2.0)
+            and (samples <= 3.0)) & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
+            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))

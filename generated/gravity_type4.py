@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight.py sha256:4670e2b1039b4330
-#   geyer.py sha256:d4de65ad7b7743ae
+#   flight.py sha256:af2637d59c8ab493
+#   geyer.py sha256:f781cbbce76a77c5
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time
 and apex-return kernels."""
@@ -84,16 +84,15 @@ def gravity_type4_stance(x, p, out):
     (m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol) = (p[0], p[1], p[2], p[3], p[6],
         p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
-            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
-            and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
-            <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0)
-            or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
-            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
-            and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
+            & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(interval)
+            & math.isfinite(leg_length) & math.isfinite(iterations) & math.isfinite(tol) & ((q_r_td <= l0)
+            and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0))
+            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0))
+            & ((interval == 0.0) or (interval == 1.0)) & ((leg_length == 0.0) or (leg_length == 1.0)
+            or (leg_length == 2.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -292,10 +291,10 @@ def gravity_type4_stance(x, p, out):
     else:
         return fail(out, STATUS_INVALID_INPUT)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd) & math.isfinite(liftoff_q_r)
+            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
+            & math.isfinite(P_c) & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         ) = (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
@@ -355,16 +354,15 @@ def gravity_type4_state_at(x, p, out):
     (m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol) = (p[0], p[1], p[2], p[3], p[6],
         p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
-            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
-            and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
-            <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0)
-            or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
-            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
-            and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
+            & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(interval)
+            & math.isfinite(leg_length) & math.isfinite(iterations) & math.isfinite(tol) & ((t >= 0.0))
+            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0)
+            or (reading == 1.0)) & ((interval == 0.0) or (interval == 1.0)) & ((leg_length == 0.0)
+            or (leg_length == 1.0) or (leg_length == 2.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -544,7 +542,7 @@ def gravity_type4_state_at(x, p, out):
     # the momentum at t
     q_thd = (P_c*(-ramp + 1.0 + ramp*t/i_t_stance) + p_td)/(m*q_r**2)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     return STATUS_OK
@@ -621,17 +619,16 @@ def gravity_type4_apex_return(x, p, out):
     (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol) = (p[0], p[1], p[2],
         p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f)
-            and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading)
-            and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-            > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading
-            == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length
-            == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
+            & math.isfinite(k) & math.isfinite(g_s) & math.isfinite(g_f) & math.isfinite(q_r_td)
+            & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(interval)
+            & math.isfinite(leg_length) & math.isfinite(iterations) & math.isfinite(tol) & ((b_y_apex >= 0.0))
+            & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0))
+            & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((reading == 0.0) or (reading == 1.0)) & ((interval == 0.0) or (interval == 1.0)) & ((leg_length
+            == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -669,11 +666,11 @@ def gravity_type4_apex_return(x, p, out):
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10]) and math.isfinite(_o1[11])):
+    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
+            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
+            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
+            & math.isfinite(touchdown_q_th) & math.isfinite(_o1[10]) & math.isfinite(_o1[11])):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r,

@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight.py sha256:4670e2b1039b4330
-#   geyer.py sha256:d4de65ad7b7743ae
-#   geyer_vs.py sha256:2938ab68f64ec8b9
-#   gravity_type0.py sha256:aeeaedd4e957536b
-#   gravity_type1.py sha256:0c9da4f0c6ce0a10
-#   gravity_type2.py sha256:a9520b2072c5248a
-#   gravity_type3.py sha256:f6ec00956f584345
-#   gravity_type4.py sha256:0434fb7f17ccb53b
-#   gravity_type5.py sha256:98f4266d17071a0b
+#   flight.py sha256:af2637d59c8ab493
+#   geyer.py sha256:f781cbbce76a77c5
+#   geyer_vs.py sha256:989b828600db2cf3
+#   gravity_type0.py sha256:23b6f141295981a6
+#   gravity_type1.py sha256:9cf93325fa1a194c
+#   gravity_type2.py sha256:32f348b7c9e1aebd
+#   gravity_type3.py sha256:2679f6fbce058dbd
+#   gravity_type4.py sha256:7a3cb668ff8f8557
+#   gravity_type5.py sha256:2521abfe9185b31a
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -200,13 +200,13 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     """
     # Total ops: 59
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0))
-            and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0)
-            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
+            & math.isfinite(guess_q_r) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
+            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
     _S = carray(stack(156), (13, 12))
@@ -336,8 +336,8 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     if not ((end_q_r > 0.0)):
         return _NAN6 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_th)
-            and math.isfinite(end_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_th)
+            & math.isfinite(end_q_thd) & math.isfinite(passes)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, 0.0, end_q_th, end_q_thd, passes, STATUS_OK)
 
@@ -379,14 +379,14 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     """
     # Total ops: 51
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0))
-            and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
-            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
-            and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
+            & math.isfinite(q_r_lo) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
+            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
+            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
     _S = carray(stack(144), (12, 12))
@@ -510,13 +510,13 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     end_q_thd = (_p_end + m*q_r**2*q_thd)/(m*q_r_lo**2)
     passes = _passes
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
+            & math.isfinite(end_q_thd) & math.isfinite(passes)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -635,16 +635,16 @@ def iterative_core(_a):
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return _NAN11 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
+            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
+            & math.isfinite(liftoff_q_thd) & math.isfinite(passes)):
         return _NAN11 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """The zeroth iterate 'held': the touchdown state held, the bottom from the radial work.
 
@@ -683,7 +683,7 @@ def zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
     return (z_b_q_r, z_b_q_th, z_b_q_thd, 0.0, 0.0, STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -705,7 +705,7 @@ def zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -727,7 +727,7 @@ def zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -749,7 +749,7 @@ def zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -771,7 +771,7 @@ def zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -793,7 +793,7 @@ def zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -815,7 +815,7 @@ def zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
@@ -855,15 +855,14 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth):
     (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
         p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
+            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
+            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -898,10 +897,10 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth):
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
+            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
+            & math.isfinite(liftoff_q_thd) & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
@@ -990,16 +989,15 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
+            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
+            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
+            & math.isfinite(tol) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0)
+            and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
+            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1037,11 +1035,11 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th) and math.isfinite(_o1[10])):
+    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
+            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
+            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
+            & math.isfinite(touchdown_q_th) & math.isfinite(_o1[10])):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
@@ -1135,15 +1133,14 @@ def iterative_stance_zeroth_held(x, p, out):
     (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
         p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
+            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
+            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1178,10 +1175,10 @@ def iterative_stance_zeroth_held(x, p, out):
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
+            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
+            & math.isfinite(liftoff_q_thd) & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
         t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,

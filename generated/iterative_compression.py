@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:62e44891ccf3c0c2
+#   iterative.py sha256:0664e28e25d833a6
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -46,14 +46,13 @@ def iterative_compression_zeroth_shared(x, p, out, zeroth):
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
     (m, l0, k_c, g_s, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes
-            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
+            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((q_r_td <= l0)
+            and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c
+            > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
+            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # zeroth iterate (option zeroth)
     _c0 = zeroth(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td)
@@ -76,8 +75,8 @@ def iterative_compression_zeroth_shared(x, p, out, zeroth):
     end_q_thd = _c1[4]
     passes = _c1[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
+            & math.isfinite(end_q_thd) & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,
         passes,)

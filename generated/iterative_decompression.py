@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight.py sha256:4670e2b1039b4330
-#   iterative.py sha256:62e44891ccf3c0c2
+#   flight.py sha256:af2637d59c8ab493
+#   iterative.py sha256:0664e28e25d833a6
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -70,14 +70,13 @@ def iterative_decompression(x, p, out):
     (q_r_b, q_rd_b, q_th_b, q_thd_b) = (x[0], x[1], x[2], x[3])
     (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
-            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
-            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
+            & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol)
+            & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0))
+            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
+            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # decompression half, k_d (report 5.2.2)
     _c0 = (schwind_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,
@@ -91,8 +90,8 @@ def iterative_decompression(x, p, out):
     end_q_thd = _c0[4]
     passes = _c0[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
+            & math.isfinite(end_q_thd) & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,
         passes,)
@@ -154,15 +153,14 @@ def iterative_decompression_apex(x, p, out):
     (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol, g_f) = (p[0], p[1], p[2], p[3], p[5], p[6], p[7], p[8],
         p[4])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
-            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
-            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(g_f) and ((q_r_b > 0.0))
-            and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s
-            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes
-            == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((g_f
-            > 0.0))):
+    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
+            & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol)
+            & math.isfinite(g_f) & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
+            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0)) & ((g_f > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the half: Iterative decompression half (bottom to liftoff, k_d; converging form)
     _x0 = carray(stack(4), 4)
@@ -190,9 +188,9 @@ def iterative_decompression_apex(x, p, out):
     apex_speed = _c1[1]
     t_ascent = _c1[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(_o0[0])
-            and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd)
-            and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
+    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(_o0[0])
+            & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
+            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7],) = (apex_height, apex_speed, _o0[0],
         t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,)

@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:72dc6cc8c85fe100
-#   geyer_jacobian.py sha256:af7590c63bb7e7e7
-#   geyer_vs_jacobian.py sha256:84011f3c01b20ef3
-#   gravity_type0_jacobian.py sha256:af2c73998e6c954f
-#   gravity_type1_jacobian.py sha256:3af59a257dd7e0d5
-#   gravity_type2_jacobian.py sha256:277e5618f2fd2c2e
-#   gravity_type3_jacobian.py sha256:f80d52a2cef45077
-#   gravity_type4_jacobian.py sha256:f7f718bc6fe627c2
-#   gravity_type5_jacobian.py sha256:4ee1dceacbe65816
+#   flight_jacobian.py sha256:6484d7d4c51d3864
+#   geyer_jacobian.py sha256:54d97ba3c74440a2
+#   geyer_vs_jacobian.py sha256:868cfef6d693b944
+#   gravity_type0_jacobian.py sha256:e3547d45c78b2c92
+#   gravity_type1_jacobian.py sha256:eb74c21c35483012
+#   gravity_type2_jacobian.py sha256:fede4a4beadc16dc
+#   gravity_type3_jacobian.py sha256:cdfecae992b516ae
+#   gravity_type4_jacobian.py sha256:1d960a3988906ef1
+#   gravity_type5_jacobian.py sha256:402c0e0dd2cf6736
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -584,13 +584,13 @@ def schwind_compression_jvp6_4eaacb(_a, out):
         _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19], _a[20], _a[21], _a[22],
         _a[23], _a[24], _a[25], _a[26], _a[27], _a[28], _a[29], _a[30], _a[31])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0))
-            and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0)
-            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
+            & math.isfinite(guess_q_r) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
+            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
     _S = carray(stack(1092), (91, 12))
@@ -1172,14 +1172,14 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
     """
     # Total ops: 282
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0))
-            and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
-            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
-            and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
+            & math.isfinite(q_r_lo) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
+            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
+            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
     _S = carray(stack(1008), (84, 12))
@@ -1999,15 +1999,14 @@ def iterative_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac):
     (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
         p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
+            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
+            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2328,11 +2327,11 @@ def iterative_apex_return_jacobian_tail_42d188(_a, out):
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by the role kernels that return them)
-    if not (math.isfinite(_o0[0]) and math.isfinite(_o0[1]) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(_o0[2]) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th) and math.isfinite(passes)):
+    if not (math.isfinite(_o0[0]) & math.isfinite(_o0[1]) & math.isfinite(t_descent) & math.isfinite(t_stance)
+            & math.isfinite(_o0[2]) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
+            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd) & math.isfinite(step_length)
+            & math.isfinite(foot_x) & math.isfinite(foot_y) & math.isfinite(touchdown_q_th)
+            & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
@@ -2388,16 +2387,15 @@ def iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jac
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
         p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
+            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
+            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
+            & math.isfinite(tol) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0)
+            and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
+            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2524,15 +2522,14 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
     (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
         p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
-            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
+            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
+            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):

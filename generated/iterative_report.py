@@ -7,9 +7,9 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight.py sha256:4670e2b1039b4330
-#   geyer_vs.py sha256:2938ab68f64ec8b9
-#   iterative.py sha256:62e44891ccf3c0c2
+#   flight.py sha256:af2637d59c8ab493
+#   geyer_vs.py sha256:989b828600db2cf3
+#   iterative.py sha256:0664e28e25d833a6
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -170,8 +170,8 @@ def report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_
     bottom_q_th = c_Q
     bottom_q_thd = c_P/(bottom_q_r**2*m)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_th)
-            and math.isfinite(bottom_q_thd) and math.isfinite(E_ab)):
+    if not (math.isfinite(t_bottom) & math.isfinite(bottom_q_r) & math.isfinite(bottom_q_th)
+            & math.isfinite(bottom_q_thd) & math.isfinite(E_ab)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, E_ab, STATUS_OK)
 
@@ -332,10 +332,10 @@ def report_core(_a):
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return _NAN10 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
+            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
+            & math.isfinite(liftoff_q_thd)):
         return _NAN10 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, STATUS_OK)
@@ -361,14 +361,14 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth):
     (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
         p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations)
+            & math.isfinite(bottom_length) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
+            == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -402,10 +402,10 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
+            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
+            & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
@@ -496,16 +496,15 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
+            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
+            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(variant)
+            & math.isfinite(iterations) & math.isfinite(bottom_length) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((variant == 0.0) or (variant == 1.0)) & ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) & ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -543,11 +542,11 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(_o1[1]) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
+    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
+            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
+            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
+            & math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
@@ -642,14 +641,14 @@ def iterative_report_stance_zeroth_held(x, p, out):
     (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
         p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations)
+            & math.isfinite(bottom_length) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
+            == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -683,10 +682,10 @@ def iterative_report_stance_zeroth_held(x, p, out):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
+    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
+            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
+            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
+            & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
         bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,

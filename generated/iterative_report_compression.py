@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:62e44891ccf3c0c2
-#   iterative_report.py sha256:9a5b53659c0fb649
+#   iterative.py sha256:0664e28e25d833a6
+#   iterative_report.py sha256:1e191103b70656bd
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -47,14 +47,13 @@ def iterative_report_compression_zeroth_shared(x, p, out, zeroth):
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
     (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
+            & math.isfinite(variant) & math.isfinite(iterations) & math.isfinite(bottom_length) & ((q_r_td
+            <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c
+            > 0.0)) & ((g_s > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
+            == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -86,8 +85,8 @@ def iterative_report_compression_zeroth_shared(x, p, out, zeroth):
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
+            & math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     return STATUS_OK

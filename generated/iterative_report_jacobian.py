@@ -7,9 +7,9 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:72dc6cc8c85fe100
-#   geyer_vs_jacobian.py sha256:84011f3c01b20ef3
-#   iterative_jacobian.py sha256:0849c69cecdee1dc
+#   flight_jacobian.py sha256:6484d7d4c51d3864
+#   geyer_vs_jacobian.py sha256:868cfef6d693b944
+#   iterative_jacobian.py sha256:5f2c536f2421d448
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -1060,14 +1060,14 @@ def iterative_report_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac):
     (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
         p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations)
+            & math.isfinite(bottom_length) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
+            == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1389,11 +1389,10 @@ def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by the role kernels that return them)
-    if not (math.isfinite(_o0[0]) and math.isfinite(_o0[1]) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(_o0[2]) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(touchdown_q_th)):
+    if not (math.isfinite(_o0[0]) & math.isfinite(_o0[1]) & math.isfinite(t_descent) & math.isfinite(t_stance)
+            & math.isfinite(_o0[2]) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
+            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd) & math.isfinite(step_length)
+            & math.isfinite(foot_x) & math.isfinite(foot_y) & math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
@@ -1449,16 +1448,15 @@ def iterative_report_apex_return_jacobian_zeroth_shared(x, p, out, iterative_rep
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
         p[4], p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(retraction_rate) and math.isfinite(m)
-            and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(bottom_length)
-            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-            == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
+            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
+            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
+            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(variant)
+            & math.isfinite(iterations) & math.isfinite(bottom_length) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((variant == 0.0) or (variant == 1.0)) & ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) & ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1588,14 +1586,14 @@ def iterative_report_stance_jacobian_zeroth_held(x, p, out):
     (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
         p[8], p[9], p[10])
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
+            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
+            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations)
+            & math.isfinite(bottom_length) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
+            == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):

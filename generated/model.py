@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight.py sha256:4670e2b1039b4330
-#   geyer_vs.py sha256:2938ab68f64ec8b9
+#   flight.py sha256:af2637d59c8ab493
+#   geyer_vs.py sha256:989b828600db2cf3
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -69,8 +69,8 @@ def apex_to_touchdown_entry(x, p, out):
     t_flight = _c0[4]
     foot_x = _c0[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th)
-            and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(foot_x)):
+    if not (math.isfinite(touchdown_q_r) & math.isfinite(touchdown_q_rd) & math.isfinite(touchdown_q_th)
+            & math.isfinite(touchdown_q_thd) & math.isfinite(t_flight) & math.isfinite(foot_x)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4], out[5],) = (touchdown_q_r, touchdown_q_rd, touchdown_q_th,
         touchdown_q_thd, t_flight, foot_x,)
@@ -119,8 +119,8 @@ def liftoff_to_apex_entry(x, p, out):
     dx_flight = _c0[3]
     apex_b_x = _c0[4]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight)
-            and math.isfinite(dx_flight) and math.isfinite(apex_b_x)):
+    if not (math.isfinite(apex_b_y) & math.isfinite(apex_b_xd) & math.isfinite(t_flight)
+            & math.isfinite(dx_flight) & math.isfinite(apex_b_x)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3], out[4],) = (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,)
     return STATUS_OK
@@ -164,8 +164,7 @@ def stance_polar_rhs_entry(x, p, out):
     d_q_th = _c0[2]
     d_q_thd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(d_q_r) and math.isfinite(d_q_rd) and math.isfinite(d_q_th)
-            and math.isfinite(d_q_thd)):
+    if not (math.isfinite(d_q_r) & math.isfinite(d_q_rd) & math.isfinite(d_q_th) & math.isfinite(d_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3],) = (d_q_r, d_q_rd, d_q_th, d_q_thd,)
     return STATUS_OK
@@ -209,8 +208,7 @@ def stance_cartesian_rhs_entry(x, p, out):
     d_b_y = _c0[2]
     d_b_yd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(d_b_x) and math.isfinite(d_b_xd) and math.isfinite(d_b_y)
-            and math.isfinite(d_b_yd)):
+    if not (math.isfinite(d_b_x) & math.isfinite(d_b_xd) & math.isfinite(d_b_y) & math.isfinite(d_b_yd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3],) = (d_b_x, d_b_xd, d_b_y, d_b_yd,)
     return STATUS_OK
@@ -292,8 +290,8 @@ def polar_to_cartesian_entry(x, p, out):
     out_b_y = _c0[2]
     out_b_yd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(out_b_x) and math.isfinite(out_b_xd) and math.isfinite(out_b_y)
-            and math.isfinite(out_b_yd)):
+    if not (math.isfinite(out_b_x) & math.isfinite(out_b_xd) & math.isfinite(out_b_y)
+            & math.isfinite(out_b_yd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3],) = (out_b_x, out_b_xd, out_b_y, out_b_yd,)
     return STATUS_OK
@@ -337,8 +335,8 @@ def cartesian_to_polar_entry(x, p, out):
     out_q_th = _c0[2]
     out_q_thd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(out_q_r) and math.isfinite(out_q_rd) and math.isfinite(out_q_th)
-            and math.isfinite(out_q_thd)):
+    if not (math.isfinite(out_q_r) & math.isfinite(out_q_rd) & math.isfinite(out_q_th)
+            & math.isfinite(out_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
     (out[0], out[1], out[2], out[3],) = (out_q_r, out_q_rd, out_q_th, out_q_thd,)
     return STATUS_OK

@@ -10,6 +10,7 @@ import os
 import subprocess
 import sys
 import textwrap
+from dataclasses import replace
 from pathlib import Path
 
 import kernels
@@ -71,7 +72,7 @@ def _load(tmp_path: Path, lowered: list[dict]):
 def test_kernels_differing_only_in_their_callee_share_one_body(tmp_path):
     c2, c3 = _callee("times_two", 2.0), _callee("times_three", 3.0)
     lowered = [lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3))]
-    out = share_bodies(lowered, inline=set())
+    out = share_bodies(lowered)
     assert [k["name"] for k in out] == ["times_two", "times_three", "step" + SUFFIX, "step_two", "step_three"]
     body = out[2]
     assert body["shared_by"] == ["step_two", "step_three"] and body["shared_args"] == ["times"]
@@ -87,23 +88,28 @@ def test_kernels_differing_only_in_their_callee_share_one_body(tmp_path):
 def test_a_kernel_differing_in_more_than_its_callees_keeps_its_body():
     c2, c3 = _callee("times_two", 2.0), _callee("times_three", 3.0)
     lowered = [lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3, offset=2.0))]
-    out = share_bodies(lowered, inline=set())
+    out = share_bodies(lowered)
     assert [k["name"] for k in out] == [k["name"] for k in lowered]
     assert not any(k["shared_by"] or k["entry_of"] for k in out)
 
 
-def test_a_callee_numba_inlines_is_never_an_argument():
+def test_a_callee_numba_inlines_is_inlined_through_the_argument(tmp_path):
+    """The zeroth iterates are ``inline="always"``: passed to the inlined shared body, numba inlines
+    them into the entry point too (never compiled on their own)."""
     c2, c3 = _callee("times_two", 2.0), _callee("times_three", 3.0)
-    lowered = [lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3))]
-    out = share_bodies(lowered, inline={"times_two"})
-    assert [k["name"] for k in out] == [k["name"] for k in lowered]
+    c2, c3 = (replace(c, inline=True) for c in (c2, c3))
+    out = share_bodies([lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3))])
+    assert out[2]["name"] == "step" + SUFFIX
+    mod, _ = _load(tmp_path, out)
+    assert mod.step_three(1.5, 2.0) == (1.5 * 3.0 * 2.0 + 1.0, 0)
+    assert mod.times_three.signatures == [] and mod.step_shared.signatures == []
 
 
 def test_sharing_is_deterministic():
     def build():
         c2, c3 = _callee("times_two", 2.0), _callee("times_three", 3.0)
         lowered = [lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3))]
-        return json.dumps(share_bodies(lowered, inline=set()), sort_keys=True, default=repr)
+        return json.dumps(share_bodies(lowered), sort_keys=True, default=repr)
 
     assert build() == build()
 

@@ -421,6 +421,10 @@ def held_kernel() -> Kernel:
         check_inputs=False,
         check_outputs=False,
         dense_tangent=True,
+        # inlined into its callers as a map's stance was before it had a kernel of its own (a
+        # compiled layer of its own cost a first call about 1 s: numba optimises its code again in
+        # each caller's module)
+        inline=True,
     )
 
 
@@ -463,6 +467,10 @@ def zeroth_kernel(name: str) -> Kernel:
         check_inputs=False,
         check_outputs=False,
         dense_tangent=True,
+        # inlined into its callers as a map's stance was before it had a kernel of its own (a
+        # compiled layer of its own cost a first call about 1 s: numba optimises its code again in
+        # each caller's module)
+        inline=True,
     )
 
 
