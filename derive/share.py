@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import copy
 import json
+import keyword
 import os
 import re
 
@@ -98,7 +99,7 @@ def _argument_names(columns: list[tuple[str, ...]], taken: set[str]) -> list[str
     for i, names in enumerate(columns):
         words = [w for w in (_common_prefix(names), _common_suffix(names).split("_")[0]) if w]
         name = "_".join(words)
-        if not name.isidentifier() or name in taken or name in out:
+        if not name.isidentifier() or keyword.iskeyword(name) or name in taken or name in out:
             name = f"callee{i}"
         out.append(name)
     return out

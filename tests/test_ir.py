@@ -1358,3 +1358,19 @@ def test_a_stage_at_zero_evaluates_its_values_at_zero_and_keeps_their_derivative
     assert res[-1] == OK and res[:2] == (2.0, math.cos(2.0))
     # d u/d w, d u/d y, d v/d w, d v/d y at y = 0
     assert np.allclose(res[2:6], (1.0, 4.0, -math.sin(2.0), -math.sin(2.0)), rtol=1e-15)
+
+
+def test_a_copy_of_a_forwarded_value_is_read_where_it_is_used():
+    """A forwarded value (a callee's out-array entry or a constant) renamed twice (a derivative taken
+    from a callee's row as it is) is not named: the kernel's output reads the value itself."""
+    a, b = sym("a"), sym("b")
+    kernel = _kernel(
+        "k_copies",
+        _args(x),
+        (Stage(((a, sp.Float(2.5)), (u, 2 * x))), Stage(((b, a),)), Stage(((w, b),))),
+        _out("u", "w"),
+    )
+    low = lower(kernel)
+    assigned = [n["name"] for n in low["body"] if n["kind"] == "assign"]
+    assert not {"a", "b", "w"} & set(assigned), low["body"]
+    assert [o["code"] for o in low["outputs"]] == ["u", "2.5"]

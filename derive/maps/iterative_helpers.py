@@ -386,6 +386,22 @@ def zeroth_option() -> Option:
 ZEROTH_OUTPUTS = ("z_b_q_r", "z_b_q_th", "z_b_q_thd", "z_lo_q_th", "z_lo_q_thd")
 
 
+#: What every zeroth iterate's kernel is besides its name and steps: its outputs, and
+#: - ``dense_tangent``: its callers read all of its derivatives, so that the iterative maps' kernels of
+#:   two choices differ in this callee only and share one body (derive/share.py);
+#: - ``inline``: inlined into its callers, as a map's stance was before it had a kernel of its own (a
+#:   compiled layer of its own cost a first call about 1 s: numba optimises its code again in each
+#:   caller's module).
+_ZEROTH_KERNEL = dict(
+    outputs=Group("", tuple(Field(n, f"zeroth iterate: {n}") for n in ZEROTH_OUTPUTS)),
+    module="iterative",
+    check_inputs=False,
+    check_outputs=False,
+    dense_tangent=True,
+    inline=True,
+)
+
+
 @cache
 def held_kernel() -> Kernel:
     """The held touchdown state as a zeroth iterate, a kernel (so that every choice of ``zeroth`` is a
@@ -416,15 +432,7 @@ def held_kernel() -> Kernel:
                 comment="held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2",
             ),
         ),
-        outputs=Group("", tuple(Field(n, f"zeroth iterate: {n}") for n in ZEROTH_OUTPUTS)),
-        module="iterative",
-        check_inputs=False,
-        check_outputs=False,
-        dense_tangent=True,
-        # inlined into its callers as a map's stance was before it had a kernel of its own (a
-        # compiled layer of its own cost a first call about 1 s: numba optimises its code again in
-        # each caller's module)
-        inline=True,
+        **_ZEROTH_KERNEL,
     )
 
 
@@ -443,9 +451,7 @@ def zeroth_kernel(name: str) -> Kernel:
     """The zeroth iterate of choice ``name`` (:func:`zeroth_option`) as a kernel of the touchdown
     state and :data:`_ZEROTH_PARAMS` returning :data:`ZEROTH_OUTPUTS`: :func:`held_kernel`, or a call
     of the map's stance at its default options with the stiffness k_c (k_d as given). Every choice's
-    kernel has the same arguments and outputs, and its callers read all of its derivatives
-    (``dense_tangent``): the iterative maps' kernels of two choices differ in this callee only, and
-    share one body (derive/share.py)."""
+    kernel has the same arguments and outputs (:data:`_ZEROTH_KERNEL`)."""
     if name == HELD:
         return held_kernel()
     spec = next(s for s in zeroth_maps() if s.name == name)
@@ -462,15 +468,7 @@ def zeroth_kernel(name: str) -> Kernel:
         equations=(),
         args=args,
         steps=(spec.stance_call(touchdown, {**p, "k": p["k_c"]}, bind, comment=f"stance: {spec.title}"),),
-        outputs=Group("", tuple(Field(n, f"zeroth iterate: {n}") for n in ZEROTH_OUTPUTS)),
-        module="iterative",
-        check_inputs=False,
-        check_outputs=False,
-        dense_tangent=True,
-        # inlined into its callers as a map's stance was before it had a kernel of its own (a
-        # compiled layer of its own cost a first call about 1 s: numba optimises its code again in
-        # each caller's module)
-        inline=True,
+        **_ZEROTH_KERNEL,
     )
 
 
