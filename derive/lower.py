@@ -818,9 +818,8 @@ def _forward(body: list[dict]) -> dict[str, str]:
         while code in forward:
             code = forward[code]
         forward[name] = code
-    if not forward or any(code in defs for code in forward.values()):
-        # (a copy of a value kept by name: only sources forward)
-        forward = {name: code for name, code in forward.items() if code not in defs}
+    # (a copy of a value kept by name stays: only sources forward)
+    forward = {name: code for name, code in forward.items() if code not in defs}
     if not forward:
         return {}
     word = re.compile(r"\b(" + "|".join(map(re.escape, sorted(forward))) + r")\b")

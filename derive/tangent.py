@@ -391,7 +391,8 @@ class Differentiator:
         if suffix:
             out = self._thin(out, suffix)
         self._add(out)
-        return _Derived(out, frozenset(zero))
+        # a dense_tangent kernel's callers read every entry (derive/ir.py): none is zero to them
+        return _Derived(out, frozenset() if kernel.dense_tangent else frozenset(zero))
 
     def _thin(self, k: Kernel, suffix: str) -> Kernel:
         """A per-choice derivative kernel (of a kernel specialized for ``suffix``'s choice) whose
@@ -714,7 +715,7 @@ class _Ctx:
         for out, local in c.bind.items():
             entries[local] = []
             for a in active:
-                if (out, a) not in derived.zero or c.kernel.dense_tangent:
+                if (out, a) not in derived.zero:
                     name = _entry_name(local, a)
                     bind[tangent_name(out, a)] = name
                     entries[local].append((sym(name), a))
@@ -750,7 +751,7 @@ class _Ctx:
         for out, local in c.bind.items():
             tangent = {w: sp.S.Zero for w in self.frame.wrt}
             for j, w in enumerate(dirs):
-                if (out, str(j)) not in derived.zero or callee.dense_tangent:
+                if (out, str(j)) not in derived.zero:
                     bind[tangent_name(out, str(j))] = tangent_name(local, w)
                     tangent[w] = sym(tangent_name(local, w))
             self.frame.tangents[local] = tangent
