@@ -195,6 +195,10 @@ class Iterate:
     ``arrays`` holds node arrays in the state (:class:`Nodes`), each as ``(array, initial array,
     update array, scale)`` (names; the update array written by the loop's steps), over the first
     ``nodes`` entries; ``array_carry`` the same outside the convergence test (their tangents).
+
+    ``per_direction``: how a Jacobian carries the loop's tangents (:mod:`.tangent`): ``None`` by
+    the loop's size (``tangent.LOOPED_SIZE``), ``False`` a variable per tangent and direction (for
+    a loop that mostly runs no pass, where the direction array costs more than it saves).
     """
 
     state: tuple[tuple[sp.Symbol, sp.Basic], ...]
@@ -211,6 +215,7 @@ class Iterate:
     arrays: tuple[tuple[str, str, str, sp.Basic], ...] = ()
     nodes: sp.Basic = sp.S.Zero
     array_carry: tuple[tuple[str, str, str], ...] = ()
+    per_direction: bool | None = None
 
     def __post_init__(self):
         if not len(self.update) == len(self.scales) == len(self.state):
@@ -251,12 +256,12 @@ class Load:
 class Directions:
     """Steps run once per direction ``j`` of a derivative kernel (its tangent code inside a loop,
     written once instead of once per direction): each read binds a name to ``_T[row, j]``, the
-    stages compute, each write stores an expression in ``_T[row, j]``. Names defined inside are not
-    visible after."""
+    stages (and switches of stages) compute, each write stores an expression in ``_T[row, j]``.
+    Names defined inside are not visible after."""
 
     n: int
     reads: tuple[tuple[sp.Symbol, int], ...]
-    steps: tuple[Stage, ...]
+    steps: tuple[Stage | Switch, ...]
     writes: tuple[tuple[sp.Basic, int], ...]
     comment: str = ""
 

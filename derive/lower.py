@@ -124,6 +124,11 @@ class _Ctx:
     #: the module constants of the lookup tables: name -> (padded shape, values by code)
     tables: dict = field(default_factory=dict)
     node_loops: int = 0
+    #: what each branch of a switch defined, for a later switch on the same selector in a scope
+    #: the first one's is still open: (that scope, selector, code, names, the branch's scope)
+    branches: list = field(default_factory=list)
+    #: per open branch, the scopes of the earlier branches it continues
+    aliases: list = field(default_factory=list)
 
     def push(self) -> None:
         self.scope.frames.append(set())
@@ -493,12 +498,29 @@ def _lower_switch(ctx: _Ctx, sw: Switch, idx: str) -> list[dict]:
     ctx.statuses.add("INVALID_INPUT")
     # Every branch must define the same public names; a name starting with "_" may be defined by
     # some branches only (a branch-local helper) and is visible after the switch only if all do.
+    # A branch also sees what the same branch of an earlier switch on the same selector defined, if
+    # that switch's scope is still open (an option is assigned once: the same branch ran there):
+    # the tangent code of a branch, run per direction, reads its partial derivatives (tangent.py).
+    # (the earlier branch's scope then counts as open in this one, for the switches nested in both).
+    enclosing = ctx.scope.frames[-1]
     cases = []
     branch_names: list[set[str]] = []
     for value, steps in sw.cases:
         ctx.push()
+        seen: set[str] = set()
+        aliases = []
+        for scope, selector, code, names, frame in ctx.branches:
+            if selector == sw.selector.name and code == value and _is_open(ctx, scope):
+                seen |= names - ctx.scope.all()
+                aliases.append(frame)
+        ctx.scope.frames[-1].update(seen)
+        ctx.aliases.append(aliases)
         nodes = _lower_steps(ctx, steps, f"{idx}.{value}.")
-        branch_names.append(ctx.pop())
+        ctx.aliases.pop()
+        frame = ctx.pop()
+        names = frame - seen
+        ctx.branches.append((enclosing, sw.selector.name, value, names, frame))
+        branch_names.append(names)
         cases.append({"value": to_code(sp.Integer(value)), "body": nodes})
     publics = [{n for n in names if not n.startswith("_")} for names in branch_names]
     for value_names, (value, _) in zip(publics, sw.cases, strict=True):
@@ -515,11 +537,18 @@ def _lower_switch(ctx: _Ctx, sw: Switch, idx: str) -> list[dict]:
     return nodes
 
 
+def _is_open(ctx: _Ctx, scope: set) -> bool:
+    """Whether ``scope`` is open: one of the current scopes, or the earlier branch a current branch
+    continues (:func:`_lower_switch`)."""
+    return any(f is scope for f in ctx.scope.frames) or any(f is scope for a in ctx.aliases for f in a)
+
+
 def _directions(ctx: _Ctx, n: int, row: int, where: str) -> None:
     if ctx.directions and ctx.directions != n:
         raise LoweringError(ctx.where(f"{where}: {n} directions, the kernel has {ctx.directions}"))
     ctx.directions = n
     ctx.rows = max(ctx.rows, row + 1)
+    ctx.uses_support = True  # the direction array is on the kernel's stack
 
 
 def _lower_store(ctx: _Ctx, st: Store, idx: str) -> list[dict]:

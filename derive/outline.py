@@ -9,8 +9,8 @@ loops carry a tangent per state variable and direction (the compression half of 
 Koditschek's iteration: 13 values x 7), and its branches define a tangent per output and direction,
 so one function holding the five node-count branches, each a loop, compiled in 300 s. Now:
 
-- a loop's tangents are rows of the direction array (the loops whose steps are stages and calls,
-  derive/tangent.py) or, carried variables, one tuple unpacked at the top of every pass
+- a loop's tangents are rows of the direction array (the loops whose steps are stages, calls and
+  switches of them, derive/tangent.py) or, carried variables, one tuple unpacked at the top of every pass
   (derive/lower.py, the packed loop), and its body is not outlined: a loop body outlined into a
   kernel of its own passed all its values and tangents through the call's arguments and result
   tuple every pass (about 200 for the six-node half), and every outlined level makes LLVM optimize

@@ -473,7 +473,7 @@ _J = "j"
 #: cost about 100 ns a call, which a small loop does not win back: measured 2026-12-01, the gravity
 #: maps' loops of 21-23 assignments 1.55x -> 1.8x their map per direction, geyer-vs's (a switch
 #: per pass, none by default) 2.1x -> 2.9x: so a loop holding a switch is not run per direction).
-LOOPED_SIZE = 24
+LOOPED_SIZE = 20
 
 
 #: A per-choice derivative kernel's tail of at least this many assignments is shared
@@ -512,6 +512,15 @@ def _size(steps) -> int:
 def _straight(steps) -> bool:
     """Steps without a loop or a branch: stages and calls."""
     return all(isinstance(s, (Stage, Call)) for s in steps)
+
+
+def _loopable(steps) -> bool:
+    """Steps whose tangent code can run per direction (:meth:`_Ctx.split`): stages, calls and
+    switches of such steps."""
+    return all(
+        isinstance(s, (Stage, Call)) or (isinstance(s, Switch) and all(_loopable(b) for _, b in s.cases))
+        for s in steps
+    )
 
 
 @dataclass
@@ -685,6 +694,11 @@ class _Ctx:
             elif isinstance(step, Call):
                 for part in self.call(step):
                     (values if isinstance(part, Call) else tangents).append(part)
+            elif isinstance(step, Switch):
+                vals, tans = self.split_switch(step)
+                values.append(vals)
+                if any(branch for _, branch in tans.cases):
+                    tangents.append(tans)
             else:
                 raise TypeError(f"no per-direction tangent code for a {type(step).__name__}")
         return values, tangents
@@ -799,7 +813,8 @@ class _Ctx:
         the passes (:attr:`~.ir.Iterate.carry`)."""
         size = _size(it.evaluate + it.body) + len(it.update)
         if (
-            _straight(it.evaluate + it.body)
+            it.per_direction is not False
+            and _loopable(it.evaluate + it.body)
             and size >= LOOPED_SIZE
             and not self.generic
             and len(self.frame.wrt) > 1
@@ -1029,12 +1044,24 @@ class _Ctx:
         return pre + [loop]
 
     def switch(self, sw: Switch) -> Switch:
+        (out,) = self._branches(sw, lambda steps: (self.steps(steps),))
+        return out
+
+    def split_switch(self, sw: Switch) -> tuple[Switch, Switch]:
+        """Generic direction: the switch of the branches' values and the switch of their tangent
+        code (:meth:`split`), on the same selector (an option: the same branch both times)."""
+        return self._branches(sw, lambda steps: tuple(tuple(part) for part in self.split(steps)))
+
+    def _branches(self, sw: Switch, differentiate) -> tuple[Switch, ...]:
+        """Each branch differentiated by ``differentiate`` (its steps -> one or more step groups, the
+        last of which holds the tangent code), then the tangents every branch defines named alike
+        (in the last group of each branch): one switch per group."""
         before = self.frame
         branches = []
         for value, steps in sw.cases:
             self.frame = before.copy()
-            new = self.steps(steps)
-            branches.append((value, new, self.frame))
+            groups = differentiate(steps)
+            branches.append((value, groups, self.frame))
         defined = [set(f.tangents) - set(before.tangents) for _, _, f in branches]
         common = sorted(set.intersection(*defined)) if defined else []
         wrt = before.wrt
@@ -1047,16 +1074,19 @@ class _Ctx:
                 (one,) = values if len(values) == 1 else (None,)
                 rec[w] = one if one is not None and one.is_Number else sym(tangent_name(name, w))
             merged.tangents[name] = rec
-        cases = []
-        for value, new, f in branches:
+        n = len(branches[0][1]) if branches else 1
+        cases: list[list] = [[] for _ in range(n)]
+        for value, groups, f in branches:
             fill = []
             for name in common:
                 fill += f.materialize(name, [w for w in wrt if not merged.tangents[name][w].is_Number])
             if fill:
-                new = new + (Stage(tuple(fill), comment="tangents as every branch names them"),)
-            cases.append((value, new))
+                filled = Stage(tuple(fill), comment="tangents as every branch names them")
+                groups = (*groups[:-1], groups[-1] + (filled,))
+            for i, group in enumerate(groups):
+                cases[i].append((value, group))
         self.frame = merged
-        return Switch(sw.selector, tuple(cases), sw.comment)
+        return tuple(Switch(sw.selector, tuple(c), sw.comment) for c in cases)
 
 
 __all__ = ["Differentiator", "derivative_fields", "tangent_name"]

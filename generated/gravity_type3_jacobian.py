@@ -80,7 +80,7 @@ def gravity_type3_stance_jacobian(x, p, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 756
+    # Total ops: 470
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
     (m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol) = (p[0], p[1], p[2], p[3], p[6], p[7], p[8],
         p[9], p[10])
@@ -94,6 +94,8 @@ def gravity_type3_stance_jacobian(x, p, out):
             == 0.0) or (interval == 1.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
             and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
+    # the tangents the loops compute once per direction: _T[row, direction], on the stack
+    _T = carray(stack(95), (19, 5))
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -123,16 +125,21 @@ def gravity_type3_stance_jacobian(x, p, out):
         ramp = 0.0
     else:
         return fail(out, STATUS_INVALID_INPUT)
+    (_T[0, 0], _T[0, 1], _T[0, 2], _T[0, 3], _T[0, 4], ) = (0.0, 0.0, 0.0, 0.0, 1.0, )
+    (_T[1, 0], _T[1, 1], _T[1, 2], _T[1, 3], _T[1, 4], ) = (d_p_td__q_r_td, 0.0, 0.0, d_p_td__q_thd_td, 0.0, )
+    (_T[2, 0], _T[2, 1], _T[2, 2], _T[2, 3], _T[2, 4], ) = (1.0, 0.0, 0.0, 0.0, 0.0, )
+    (_T[3, 0], _T[3, 1], _T[3, 2], _T[3, 3], _T[3, 4], ) = (0.0, 1.0, 0.0, 0.0, 0.0, )
+    (_T[4, 0], _T[4, 1], _T[4, 2], _T[4, 3], _T[4, 4], ) = (0.0, 0.0, 1.0, 0.0, 0.0, )
+    for _j0 in range(5):
+        _T[5, _j0] = 0.0
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
-    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
-    # included (its values are visible after the loop)
-    _pki0 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
-    _pk0 = _pki0
+    P_c = 0.0
     passes = 0.0
     _conv0 = False
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
-        (P_c, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
             return fail(out, STATUS_NOT_CONVERGED)
         # effective touchdown rate
@@ -143,11 +150,7 @@ def gravity_type3_stance_jacobian(x, p, out):
         i_q_thd_eff = _x10*_x12
         _pd__0 = _x12*share
         _pd__1 = _x12
-        d_i_q_thd_eff__q_r_td = _pd__0*d_P_c__q_r_td + _pd__1*d_p_td__q_r_td - 2.0*_x10*_x11*_x13**3
-        d_i_q_thd_eff__q_rd_td = _pd__0*d_P_c__q_rd_td
-        d_i_q_thd_eff__q_th_td = _pd__0*d_P_c__q_th_td
-        d_i_q_thd_eff__q_thd_td = _pd__0*d_P_c__q_thd_td + _pd__1*d_p_td__q_thd_td
-        d_i_q_thd_eff__k = _pd__0*d_P_c__k
+        _pd__2 = -2.0*_x10*_x11*_x13**3
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
         _o0 = carray(stack(30), 30)
         _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s, _o0)
@@ -179,37 +182,6 @@ def gravity_type3_stance_jacobian(x, p, out):
         _j_i_s_td__q_rd_td = _o0[27]
         _j_i_s_td__q_thd_td = _o0[28]
         _j_i_s_td__k = _o0[29]
-        # chain rule through geyer_solution
-        d_i_omega__q_r_td = _j_i_omega__q_r_td + _j_i_omega__q_thd_td*d_i_q_thd_eff__q_r_td
-        d_i_omega__q_rd_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
-        d_i_omega__q_th_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_th_td
-        d_i_omega__q_thd_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_thd_td
-        d_i_omega__k = _j_i_omega__q_thd_td*d_i_q_thd_eff__k
-        d_i_omega0_hat__q_r_td = _j_i_omega0_hat__q_r_td + _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_r_td
-        d_i_omega0_hat__q_rd_td = _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_rd_td
-        d_i_omega0_hat__q_th_td = _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_th_td
-        d_i_omega0_hat__q_thd_td = _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_thd_td
-        d_i_omega0_hat__k = _j_i_omega0_hat__k + _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__k
-        d_i_a__q_r_td = _j_i_a__q_r_td + _j_i_a__q_thd_td*d_i_q_thd_eff__q_r_td
-        d_i_a__q_rd_td = _j_i_a__q_thd_td*d_i_q_thd_eff__q_rd_td
-        d_i_a__q_th_td = _j_i_a__q_thd_td*d_i_q_thd_eff__q_th_td
-        d_i_a__q_thd_td = _j_i_a__q_thd_td*d_i_q_thd_eff__q_thd_td
-        d_i_a__k = _j_i_a__k + _j_i_a__q_thd_td*d_i_q_thd_eff__k
-        d_i_b__q_r_td = _j_i_b__q_r_td + _j_i_b__q_thd_td*d_i_q_thd_eff__q_r_td
-        d_i_b__q_rd_td = _j_i_b__q_rd_td + _j_i_b__q_thd_td*d_i_q_thd_eff__q_rd_td
-        d_i_b__q_th_td = _j_i_b__q_thd_td*d_i_q_thd_eff__q_th_td
-        d_i_b__q_thd_td = _j_i_b__q_thd_td*d_i_q_thd_eff__q_thd_td
-        d_i_b__k = _j_i_b__k + _j_i_b__q_thd_td*d_i_q_thd_eff__k
-        d_i_phase_td__q_r_td = _j_i_phase_td__q_r_td + _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_r_td
-        d_i_phase_td__q_rd_td = _j_i_phase_td__q_rd_td + _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_rd_td
-        d_i_phase_td__q_th_td = _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_th_td
-        d_i_phase_td__q_thd_td = _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_thd_td
-        d_i_phase_td__k = _j_i_phase_td__k + _j_i_phase_td__q_thd_td*d_i_q_thd_eff__k
-        d_i_s_td__q_r_td = _j_i_s_td__q_r_td + _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_r_td
-        d_i_s_td__q_rd_td = _j_i_s_td__q_rd_td + _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_rd_td
-        d_i_s_td__q_th_td = _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_th_td
-        d_i_s_td__q_thd_td = _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_thd_td
-        d_i_s_td__k = _j_i_s_td__k + _j_i_s_td__q_thd_td*d_i_q_thd_eff__k
         _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
         if _c1[6] != STATUS_OK:
             return fail(out, _c1[6])
@@ -219,50 +191,20 @@ def gravity_type3_stance_jacobian(x, p, out):
         _j_i_phase_lo__b = _c1[3]
         _j_i_s_lo__a = _c1[4]
         _j_i_s_lo__b = _c1[5]
-        # chain rule through geyer_liftoff_phase
-        d_i_phase_lo__q_r_td = _j_i_phase_lo__a*d_i_a__q_r_td + _j_i_phase_lo__b*d_i_b__q_r_td
-        d_i_phase_lo__q_rd_td = _j_i_phase_lo__a*d_i_a__q_rd_td + _j_i_phase_lo__b*d_i_b__q_rd_td
-        d_i_phase_lo__q_th_td = _j_i_phase_lo__a*d_i_a__q_th_td + _j_i_phase_lo__b*d_i_b__q_th_td
-        d_i_phase_lo__q_thd_td = _j_i_phase_lo__a*d_i_a__q_thd_td + _j_i_phase_lo__b*d_i_b__q_thd_td
-        d_i_phase_lo__k = _j_i_phase_lo__a*d_i_a__k + _j_i_phase_lo__b*d_i_b__k
-        d_i_s_lo__q_r_td = _j_i_s_lo__a*d_i_a__q_r_td + _j_i_s_lo__b*d_i_b__q_r_td
-        d_i_s_lo__q_rd_td = _j_i_s_lo__a*d_i_a__q_rd_td + _j_i_s_lo__b*d_i_b__q_rd_td
-        d_i_s_lo__q_th_td = _j_i_s_lo__a*d_i_a__q_th_td + _j_i_s_lo__b*d_i_b__q_th_td
-        d_i_s_lo__q_thd_td = _j_i_s_lo__a*d_i_a__q_thd_td + _j_i_s_lo__b*d_i_b__q_thd_td
-        d_i_s_lo__k = _j_i_s_lo__a*d_i_a__k + _j_i_s_lo__b*d_i_b__k
         # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
         _x14 = (1.0/i_omega0_hat)
         _x15 = -i_phase_td + (1.5)*math.pi
         i_t_bottom = _x14*_x15
         _x16 = _x14**2
-        _pd__2 = -_x15*_x16
+        _pd__3 = -_x15*_x16
         _x17 = -_x14
-        _pd__3 = _x17
-        d_i_t_bottom__q_r_td = _pd__2*d_i_omega0_hat__q_r_td + _pd__3*d_i_phase_td__q_r_td
-        d_i_t_bottom__q_rd_td = _pd__2*d_i_omega0_hat__q_rd_td + _pd__3*d_i_phase_td__q_rd_td
-        d_i_t_bottom__q_th_td = _pd__2*d_i_omega0_hat__q_th_td + _pd__3*d_i_phase_td__q_th_td
-        d_i_t_bottom__q_thd_td = _pd__2*d_i_omega0_hat__q_thd_td + _pd__3*d_i_phase_td__q_thd_td
-        d_i_t_bottom__k = _pd__2*d_i_omega0_hat__k + _pd__3*d_i_phase_td__k
+        _pd__4 = _x17
         _x18 = i_phase_lo - i_phase_td
         i_t_stance = _x14*_x18
-        _pd__4 = -_x16*_x18
-        _pd__5 = _x14
-        _pd__6 = _x17
-        d_i_t_stance__q_r_td = (_pd__4*d_i_omega0_hat__q_r_td + _pd__5*d_i_phase_lo__q_r_td
-            + _pd__6*d_i_phase_td__q_r_td)
-        d_i_t_stance__q_rd_td = (_pd__4*d_i_omega0_hat__q_rd_td + _pd__5*d_i_phase_lo__q_rd_td
-            + _pd__6*d_i_phase_td__q_rd_td)
-        d_i_t_stance__q_th_td = (_pd__4*d_i_omega0_hat__q_th_td + _pd__5*d_i_phase_lo__q_th_td
-            + _pd__6*d_i_phase_td__q_th_td)
-        d_i_t_stance__q_thd_td = (_pd__4*d_i_omega0_hat__q_thd_td + _pd__5*d_i_phase_lo__q_thd_td
-            + _pd__6*d_i_phase_td__q_thd_td)
-        d_i_t_stance__k = _pd__4*d_i_omega0_hat__k + _pd__5*d_i_phase_lo__k + _pd__6*d_i_phase_td__k
+        _pd__5 = -_x16*_x18
+        _pd__6 = _x14
+        _pd__7 = _x17
         i_bottom_q_r = l0*(i_a - i_b + 1.0)
-        d_i_bottom_q_r__q_r_td = d_i_a__q_r_td*l0 - d_i_b__q_r_td*l0
-        d_i_bottom_q_r__q_rd_td = d_i_a__q_rd_td*l0 - d_i_b__q_rd_td*l0
-        d_i_bottom_q_r__q_th_td = d_i_a__q_th_td*l0 - d_i_b__q_th_td*l0
-        d_i_bottom_q_r__q_thd_td = d_i_a__q_thd_td*l0 - d_i_b__q_thd_td*l0
-        d_i_bottom_q_r__k = d_i_a__k*l0 - d_i_b__k*l0
         _x19 = (1.5)*math.pi
         _x20 = _x14*i_omega
         _x21 = 3.0*math.pi
@@ -275,84 +217,86 @@ def gravity_type3_stance_jacobian(x, p, out):
         _x28 = 2.0*i_omega
         _x29 = -_x23*i_omega + _x28*(_x24 + _x27) + q_th_td
         i_bottom_q_th = _x19*_x20 - _x22*i_a + _x29
-        _pd__7 = -_x22 + _x23*_x28
+        _pd__8 = -_x22 + _x23*_x28
         _x30 = 2.0*_x20
         _x31 = _x25*_x30
-        _pd__8 = _x31
+        _pd__9 = _x31
         _x32 = _x21*i_a
         _x33 = -_x23 + 2.0*_x24 + 2.0*_x27
-        _pd__9 = _x14*_x19 - _x14*_x32 + _x33
+        _pd__10 = _x14*_x19 - _x14*_x32 + _x33
         _x34 = _x16*i_phase_td
         _x35 = _x16*i_omega
         _x36 = -_x16*_x26 - _x34*i_a
-        _pd__10 = -_x19*_x35 + _x28*_x36 + _x32*_x35 + _x34*i_omega
+        _pd__11 = -_x19*_x35 + _x28*_x36 + _x32*_x35 + _x34*i_omega
         _x37 = -_x20 + _x30*i_a
-        _pd__11 = _x37
+        _pd__12 = _x37
         _x38 = -_x30*i_b*i_s_td/_x25
-        _pd__12 = _x38
-        d_i_bottom_q_th__q_r_td = (_pd__10*d_i_omega0_hat__q_r_td + _pd__11*d_i_phase_td__q_r_td
-            + _pd__12*d_i_s_td__q_r_td + _pd__7*d_i_a__q_r_td + _pd__8*d_i_b__q_r_td
-            + _pd__9*d_i_omega__q_r_td)
-        d_i_bottom_q_th__q_rd_td = (_pd__10*d_i_omega0_hat__q_rd_td + _pd__11*d_i_phase_td__q_rd_td
-            + _pd__12*d_i_s_td__q_rd_td + _pd__7*d_i_a__q_rd_td + _pd__8*d_i_b__q_rd_td
-            + _pd__9*d_i_omega__q_rd_td)
-        d_i_bottom_q_th__q_th_td = (_pd__10*d_i_omega0_hat__q_th_td + _pd__11*d_i_phase_td__q_th_td
-            + _pd__12*d_i_s_td__q_th_td + _pd__7*d_i_a__q_th_td + _pd__8*d_i_b__q_th_td
-            + _pd__9*d_i_omega__q_th_td + 1.0)
-        d_i_bottom_q_th__q_thd_td = (_pd__10*d_i_omega0_hat__q_thd_td + _pd__11*d_i_phase_td__q_thd_td
-            + _pd__12*d_i_s_td__q_thd_td + _pd__7*d_i_a__q_thd_td + _pd__8*d_i_b__q_thd_td
-            + _pd__9*d_i_omega__q_thd_td)
-        d_i_bottom_q_th__k = (_pd__10*d_i_omega0_hat__k + _pd__11*d_i_phase_td__k + _pd__12*d_i_s_td__k
-            + _pd__7*d_i_a__k + _pd__8*d_i_b__k + _pd__9*d_i_omega__k)
+        _pd__13 = _x38
         _x39 = math.sqrt(1.0 - i_s_lo**2)
         _x40 = _x39*l0
         _x41 = _x40*i_omega0_hat
         i_liftoff_q_rd = _x41*i_b
-        _pd__16 = _x41
-        _pd__17 = _x40*i_b
+        _pd__17 = _x41
+        _pd__18 = _x40*i_b
         _x42 = i_b*i_s_lo/_x39
-        _pd__18 = -_x42*i_omega0_hat*l0
-        d_i_liftoff_q_rd__q_r_td = (_pd__16*d_i_b__q_r_td + _pd__17*d_i_omega0_hat__q_r_td
-            + _pd__18*d_i_s_lo__q_r_td)
-        d_i_liftoff_q_rd__q_rd_td = (_pd__16*d_i_b__q_rd_td + _pd__17*d_i_omega0_hat__q_rd_td
-            + _pd__18*d_i_s_lo__q_rd_td)
-        d_i_liftoff_q_rd__q_th_td = (_pd__16*d_i_b__q_th_td + _pd__17*d_i_omega0_hat__q_th_td
-            + _pd__18*d_i_s_lo__q_th_td)
-        d_i_liftoff_q_rd__q_thd_td = (_pd__16*d_i_b__q_thd_td + _pd__17*d_i_omega0_hat__q_thd_td
-            + _pd__18*d_i_s_lo__q_thd_td)
-        d_i_liftoff_q_rd__k = _pd__16*d_i_b__k + _pd__17*d_i_omega0_hat__k + _pd__18*d_i_s_lo__k
+        _pd__19 = -_x42*i_omega0_hat*l0
         _x43 = _x14*i_phase_lo
         _x44 = _x43*i_a
         _x45 = _x14*_x39*i_b
         _x46 = _x20*i_phase_lo
         i_liftoff_q_th = -_x28*(_x44 - _x45) + _x29 + _x46
-        _pd__19 = 2.0*_x14*i_omega*i_phase_td - 2.0*_x46
-        _pd__20 = _x30*_x39 + _x31
-        _pd__21 = _x33 + _x43 - 2.0*_x44 + 2.0*_x45
+        _pd__20 = 2.0*_x14*i_omega*i_phase_td - 2.0*_x46
+        _pd__21 = _x30*_x39 + _x31
+        _pd__22 = _x33 + _x43 - 2.0*_x44 + 2.0*_x45
         _x47 = _x16*i_phase_lo
-        _pd__22 = _x16*i_omega*i_phase_td - _x28*(_x16*_x39*i_b - _x47*i_a) + 2.0*_x36*i_omega - _x47*i_omega
-        _pd__23 = -_x37
-        _pd__24 = _x37
-        _pd__25 = -_x30*_x42
-        _pd__26 = _x38
-        d_i_liftoff_q_th__q_r_td = (_pd__19*d_i_a__q_r_td + _pd__20*d_i_b__q_r_td + _pd__21*d_i_omega__q_r_td
-            + _pd__22*d_i_omega0_hat__q_r_td + _pd__23*d_i_phase_lo__q_r_td + _pd__24*d_i_phase_td__q_r_td
-            + _pd__25*d_i_s_lo__q_r_td + _pd__26*d_i_s_td__q_r_td)
-        d_i_liftoff_q_th__q_rd_td = (_pd__19*d_i_a__q_rd_td + _pd__20*d_i_b__q_rd_td
-            + _pd__21*d_i_omega__q_rd_td + _pd__22*d_i_omega0_hat__q_rd_td + _pd__23*d_i_phase_lo__q_rd_td
-            + _pd__24*d_i_phase_td__q_rd_td + _pd__25*d_i_s_lo__q_rd_td + _pd__26*d_i_s_td__q_rd_td)
-        d_i_liftoff_q_th__q_th_td = (_pd__19*d_i_a__q_th_td + _pd__20*d_i_b__q_th_td
-            + _pd__21*d_i_omega__q_th_td + _pd__22*d_i_omega0_hat__q_th_td + _pd__23*d_i_phase_lo__q_th_td
-            + _pd__24*d_i_phase_td__q_th_td + _pd__25*d_i_s_lo__q_th_td + _pd__26*d_i_s_td__q_th_td + 1.0)
-        d_i_liftoff_q_th__q_thd_td = (_pd__19*d_i_a__q_thd_td + _pd__20*d_i_b__q_thd_td
-            + _pd__21*d_i_omega__q_thd_td + _pd__22*d_i_omega0_hat__q_thd_td + _pd__23*d_i_phase_lo__q_thd_td
-            + _pd__24*d_i_phase_td__q_thd_td + _pd__25*d_i_s_lo__q_thd_td + _pd__26*d_i_s_td__q_thd_td)
-        d_i_liftoff_q_th__k = (_pd__19*d_i_a__k + _pd__20*d_i_b__k + _pd__21*d_i_omega__k
-            + _pd__22*d_i_omega0_hat__k + _pd__23*d_i_phase_lo__k + _pd__24*d_i_phase_td__k
-            + _pd__25*d_i_s_lo__k + _pd__26*d_i_s_td__k)
+        _pd__23 = _x16*i_omega*i_phase_td - _x28*(_x16*_x39*i_b - _x47*i_a) + 2.0*_x36*i_omega - _x47*i_omega
+        _pd__24 = -_x37
+        _pd__25 = _x37
+        _pd__26 = -_x30*_x42
+        _pd__27 = _x38
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return fail(out, STATUS_FALL)
+        # the evaluation's tangents, once per direction
+        for _j1 in range(5):
+            d_k__j = _T[0, _j1]
+            d_p_td__j = _T[1, _j1]
+            d_q_r_td__j = _T[2, _j1]
+            d_q_rd_td__j = _T[3, _j1]
+            d_q_th_td__j = _T[4, _j1]
+            d_P_c__j = _T[5, _j1]
+            # effective touchdown rate
+            d_i_q_thd_eff__j = _pd__0*d_P_c__j + _pd__1*d_p_td__j + _pd__2*d_q_r_td__j
+            # chain rule through geyer_solution
+            d_i_omega__j = _j_i_omega__q_r_td*d_q_r_td__j + _j_i_omega__q_thd_td*d_i_q_thd_eff__j
+            d_i_omega0_hat__j = (_j_i_omega0_hat__k*d_k__j + _j_i_omega0_hat__q_r_td*d_q_r_td__j
+                + _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__j)
+            d_i_a__j = _j_i_a__k*d_k__j + _j_i_a__q_r_td*d_q_r_td__j + _j_i_a__q_thd_td*d_i_q_thd_eff__j
+            d_i_b__j = (_j_i_b__k*d_k__j + _j_i_b__q_r_td*d_q_r_td__j + _j_i_b__q_rd_td*d_q_rd_td__j
+                + _j_i_b__q_thd_td*d_i_q_thd_eff__j)
+            d_i_phase_td__j = (_j_i_phase_td__k*d_k__j + _j_i_phase_td__q_r_td*d_q_r_td__j
+                + _j_i_phase_td__q_rd_td*d_q_rd_td__j + _j_i_phase_td__q_thd_td*d_i_q_thd_eff__j)
+            d_i_s_td__j = (_j_i_s_td__k*d_k__j + _j_i_s_td__q_r_td*d_q_r_td__j
+                + _j_i_s_td__q_rd_td*d_q_rd_td__j + _j_i_s_td__q_thd_td*d_i_q_thd_eff__j)
+            # chain rule through geyer_liftoff_phase
+            d_i_phase_lo__j = _j_i_phase_lo__a*d_i_a__j + _j_i_phase_lo__b*d_i_b__j
+            d_i_s_lo__j = _j_i_s_lo__a*d_i_a__j + _j_i_s_lo__b*d_i_b__j
+            # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
+            d_i_t_bottom__j = _pd__3*d_i_omega0_hat__j + _pd__4*d_i_phase_td__j
+            d_i_t_stance__j = _pd__5*d_i_omega0_hat__j + _pd__6*d_i_phase_lo__j + _pd__7*d_i_phase_td__j
+            d_i_bottom_q_r__j = d_i_a__j*l0 - d_i_b__j*l0
+            d_i_bottom_q_th__j = (_pd__10*d_i_omega__j + _pd__11*d_i_omega0_hat__j + _pd__12*d_i_phase_td__j
+                + _pd__13*d_i_s_td__j + _pd__8*d_i_a__j + _pd__9*d_i_b__j + d_q_th_td__j)
+            d_i_liftoff_q_rd__j = _pd__17*d_i_b__j + _pd__18*d_i_omega0_hat__j + _pd__19*d_i_s_lo__j
+            d_i_liftoff_q_th__j = (_pd__20*d_i_a__j + _pd__21*d_i_b__j + _pd__22*d_i_omega__j
+                + _pd__23*d_i_omega0_hat__j + _pd__24*d_i_phase_lo__j + _pd__25*d_i_phase_td__j
+                + _pd__26*d_i_s_lo__j + _pd__27*d_i_s_td__j + d_q_th_td__j)
+            _T[6, _j1] = d_i_t_bottom__j
+            _T[7, _j1] = d_i_t_stance__j
+            _T[8, _j1] = d_i_bottom_q_r__j
+            _T[9, _j1] = d_i_bottom_q_th__j
+            _T[10, _j1] = d_i_liftoff_q_rd__j
+            _T[11, _j1] = d_i_liftoff_q_th__j
         if _conv0 or _it0 == _last0:
             break
         # eq (65)
@@ -364,14 +308,10 @@ def gravity_type3_stance_jacobian(x, p, out):
             _x52 = _x51*q_r_td
             _x53 = (0.5)*i_t_stance
             i_P_new = _x53*(_x50 + _x52)
-            _pd__31 = _x49*_x53*math.cos(i_liftoff_q_th)
-            _pd__32 = (0.5)*_x50 + (0.5)*_x52
-            d_i_P_new__q_r_td = _pd__31*d_i_liftoff_q_th__q_r_td + _pd__32*d_i_t_stance__q_r_td + _x51*_x53
-            d_i_P_new__q_rd_td = _pd__31*d_i_liftoff_q_th__q_rd_td + _pd__32*d_i_t_stance__q_rd_td
-            d_i_P_new__q_th_td = (_pd__31*d_i_liftoff_q_th__q_th_td + _pd__32*d_i_t_stance__q_th_td
-                + _x48*_x53*q_r_td*math.cos(q_th_td))
-            d_i_P_new__q_thd_td = _pd__31*d_i_liftoff_q_th__q_thd_td + _pd__32*d_i_t_stance__q_thd_td
-            d_i_P_new__k = _pd__31*d_i_liftoff_q_th__k + _pd__32*d_i_t_stance__k
+            _pd__32 = _x49*_x53*math.cos(i_liftoff_q_th)
+            _pd__33 = (0.5)*_x50 + (0.5)*_x52
+            _pd__34 = _x51*_x53
+            _pd__35 = _x48*_x53*q_r_td*math.cos(q_th_td)
         elif interval == 1.0:
             _x54 = g_s*m
             _x55 = _x54*math.sin(i_bottom_q_th)
@@ -383,38 +323,45 @@ def gravity_type3_stance_jacobian(x, p, out):
             _x61 = _x60*math.sin(i_liftoff_q_th)
             _x62 = -0.5*i_t_bottom + (0.5)*i_t_stance
             i_P_new = _x59*(_x56 + _x58*q_r_td) + _x62*(_x56 + _x61)
-            _pd__33 = _x55*_x59 + _x55*_x62
+            _pd__36 = _x55*_x59 + _x55*_x62
             _x63 = _x54*_x59
             _x64 = i_bottom_q_r*math.cos(i_bottom_q_th)
-            _pd__34 = _x54*_x62*_x64 + _x63*_x64
-            _pd__35 = _x60*_x62*math.cos(i_liftoff_q_th)
+            _pd__37 = _x54*_x62*_x64 + _x63*_x64
+            _pd__38 = _x60*_x62*math.cos(i_liftoff_q_th)
             _x65 = (0.5)*_x61
-            _pd__36 = (0.5)*_x57*g_s*m*q_r_td - _x65
-            _pd__37 = (0.5)*_x56 + _x65
-            d_i_P_new__q_r_td = (_pd__33*d_i_bottom_q_r__q_r_td + _pd__34*d_i_bottom_q_th__q_r_td
-                + _pd__35*d_i_liftoff_q_th__q_r_td + _pd__36*d_i_t_bottom__q_r_td
-                + _pd__37*d_i_t_stance__q_r_td + _x58*_x59)
-            d_i_P_new__q_rd_td = (_pd__33*d_i_bottom_q_r__q_rd_td + _pd__34*d_i_bottom_q_th__q_rd_td
-                + _pd__35*d_i_liftoff_q_th__q_rd_td + _pd__36*d_i_t_bottom__q_rd_td
-                + _pd__37*d_i_t_stance__q_rd_td)
-            d_i_P_new__q_th_td = (_pd__33*d_i_bottom_q_r__q_th_td + _pd__34*d_i_bottom_q_th__q_th_td
-                + _pd__35*d_i_liftoff_q_th__q_th_td + _pd__36*d_i_t_bottom__q_th_td
-                + _pd__37*d_i_t_stance__q_th_td + _x63*q_r_td*math.cos(q_th_td))
-            d_i_P_new__q_thd_td = (_pd__33*d_i_bottom_q_r__q_thd_td + _pd__34*d_i_bottom_q_th__q_thd_td
-                + _pd__35*d_i_liftoff_q_th__q_thd_td + _pd__36*d_i_t_bottom__q_thd_td
-                + _pd__37*d_i_t_stance__q_thd_td)
-            d_i_P_new__k = (_pd__33*d_i_bottom_q_r__k + _pd__34*d_i_bottom_q_th__k
-                + _pd__35*d_i_liftoff_q_th__k + _pd__36*d_i_t_bottom__k + _pd__37*d_i_t_stance__k)
+            _pd__39 = (0.5)*_x57*g_s*m*q_r_td - _x65
+            _pd__40 = (0.5)*_x56 + _x65
+            _pd__41 = _x58*_x59
+            _pd__42 = _x63*q_r_td*math.cos(q_th_td)
         else:
             return fail(out, STATUS_INVALID_INPUT)
         # next values
         P_c__next = i_P_new
+        # the next state's tangents, once per direction
+        for _j2 in range(5):
+            d_q_r_td__j = _T[2, _j2]
+            d_q_th_td__j = _T[4, _j2]
+            d_i_t_bottom__j = _T[6, _j2]
+            d_i_t_stance__j = _T[7, _j2]
+            d_i_bottom_q_r__j = _T[8, _j2]
+            d_i_bottom_q_th__j = _T[9, _j2]
+            d_i_liftoff_q_th__j = _T[11, _j2]
+            # eq (65)
+            if interval == 0.0:
+                d_i_P_new__j = (_pd__32*d_i_liftoff_q_th__j + _pd__33*d_i_t_stance__j + _pd__34*d_q_r_td__j
+                    + _pd__35*d_q_th_td__j)
+            elif interval == 1.0:
+                d_i_P_new__j = (_pd__36*d_i_bottom_q_r__j + _pd__37*d_i_bottom_q_th__j
+                    + _pd__38*d_i_liftoff_q_th__j + _pd__39*d_i_t_bottom__j + _pd__40*d_i_t_stance__j
+                    + _pd__41*d_q_r_td__j + _pd__42*d_q_th_td__j)
+            else:
+                return fail(out, STATUS_INVALID_INPUT)
+            _T[5, _j2] = d_i_P_new__j
+        _n0_0 = P_c__next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(P_c__next - P_c) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + abs(p_td)))
-        _pkn0 = (P_c__next, d_i_P_new__q_r_td, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__q_thd_td,
-            d_i_P_new__k, )
-        _pk0 = _pkn0
+        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + abs(p_td)))
+        P_c = _n0_0
         passes += 1.0
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
     t_bottom = i_t_bottom
@@ -429,33 +376,60 @@ def gravity_type3_stance_jacobian(x, p, out):
     _x73 = (1.0/i_bottom_q_r)
     _x70 = _x69*_x73**2
     bottom_q_thd = _x68*_x70
-    _pd__38 = _x67*_x70
-    _pd__39 = -2.0*_x68*_x69*_x73**3
+    _pd__43 = _x67*_x70
+    _pd__44 = -2.0*_x68*_x69*_x73**3
     _x71 = P_c*_x70
-    _pd__40 = _x66*_x71
-    _pd__41 = -_x71*_x74**2*i_t_bottom*ramp
-    _pd__42 = _x70
-    d_bottom_q_thd__q_r_td = (_pd__38*d_P_c__q_r_td + _pd__39*d_i_bottom_q_r__q_r_td
-        + _pd__40*d_i_t_bottom__q_r_td + _pd__41*d_i_t_stance__q_r_td + _pd__42*d_p_td__q_r_td)
-    d_bottom_q_thd__q_rd_td = (_pd__38*d_P_c__q_rd_td + _pd__39*d_i_bottom_q_r__q_rd_td
-        + _pd__40*d_i_t_bottom__q_rd_td + _pd__41*d_i_t_stance__q_rd_td)
-    d_bottom_q_thd__q_th_td = (_pd__38*d_P_c__q_th_td + _pd__39*d_i_bottom_q_r__q_th_td
-        + _pd__40*d_i_t_bottom__q_th_td + _pd__41*d_i_t_stance__q_th_td)
-    d_bottom_q_thd__q_thd_td = (_pd__38*d_P_c__q_thd_td + _pd__39*d_i_bottom_q_r__q_thd_td
-        + _pd__40*d_i_t_bottom__q_thd_td + _pd__41*d_i_t_stance__q_thd_td + _pd__42*d_p_td__q_thd_td)
-    d_bottom_q_thd__k = (_pd__38*d_P_c__k + _pd__39*d_i_bottom_q_r__k + _pd__40*d_i_t_bottom__k
-        + _pd__41*d_i_t_stance__k)
+    _pd__45 = _x66*_x71
+    _pd__46 = -_x71*_x74**2*i_t_bottom*ramp
+    _pd__47 = _x70
     liftoff_q_r = q_r_lo
     liftoff_q_th = i_liftoff_q_th
     _x72 = _x69/q_r_lo**2
     liftoff_q_thd = _x72*(P_c + p_td)
-    _pd__43 = _x72
-    _pd__44 = _x72
-    d_liftoff_q_thd__q_r_td = _pd__43*d_P_c__q_r_td + _pd__44*d_p_td__q_r_td
-    d_liftoff_q_thd__q_rd_td = _pd__43*d_P_c__q_rd_td
-    d_liftoff_q_thd__q_th_td = _pd__43*d_P_c__q_th_td
-    d_liftoff_q_thd__q_thd_td = _pd__43*d_P_c__q_thd_td + _pd__44*d_p_td__q_thd_td
-    d_liftoff_q_thd__k = _pd__43*d_P_c__k
+    _pd__48 = _x72
+    _pd__49 = _x72
+    # their tangents, once per direction
+    for _j3 in range(5):
+        d_p_td__j = _T[1, _j3]
+        d_P_c__j = _T[5, _j3]
+        d_i_t_bottom__j = _T[6, _j3]
+        d_i_t_stance__j = _T[7, _j3]
+        d_i_bottom_q_r__j = _T[8, _j3]
+        d_i_bottom_q_th__j = _T[9, _j3]
+        d_i_liftoff_q_th__j = _T[11, _j3]
+        # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
+        d_bottom_q_thd__j = (_pd__43*d_P_c__j + _pd__44*d_i_bottom_q_r__j + _pd__45*d_i_t_bottom__j
+            + _pd__46*d_i_t_stance__j + _pd__47*d_p_td__j)
+        d_liftoff_q_thd__j = _pd__48*d_P_c__j + _pd__49*d_p_td__j
+        _T[12, _j3] = d_i_t_bottom__j
+        _T[13, _j3] = d_i_t_stance__j
+        _T[14, _j3] = d_i_bottom_q_r__j
+        _T[15, _j3] = d_i_bottom_q_th__j
+        _T[16, _j3] = d_bottom_q_thd__j
+        _T[17, _j3] = d_i_liftoff_q_th__j
+        _T[18, _j3] = d_liftoff_q_thd__j
+    (d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, ) = (_T[5, 0], _T[5, 1], _T[5,
+        2], _T[5, 3], _T[5, 4], )
+    (d_i_liftoff_q_rd__q_r_td, d_i_liftoff_q_rd__q_rd_td, d_i_liftoff_q_rd__q_th_td,
+        d_i_liftoff_q_rd__q_thd_td, d_i_liftoff_q_rd__k, ) = (_T[10, 0], _T[10, 1], _T[10, 2], _T[10, 3],
+        _T[10, 4], )
+    (d_i_liftoff_q_th__q_r_td, d_i_liftoff_q_th__q_rd_td, d_i_liftoff_q_th__q_th_td,
+        d_i_liftoff_q_th__q_thd_td, d_i_liftoff_q_th__k, ) = (_T[11, 0], _T[11, 1], _T[11, 2], _T[11, 3],
+        _T[11, 4], )
+    (d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k,
+        ) = (_T[12, 0], _T[12, 1], _T[12, 2], _T[12, 3], _T[12, 4], )
+    (d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k,
+        ) = (_T[13, 0], _T[13, 1], _T[13, 2], _T[13, 3], _T[13, 4], )
+    (d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
+        d_bottom_q_r__k, ) = (_T[14, 0], _T[14, 1], _T[14, 2], _T[14, 3], _T[14, 4], )
+    (d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, ) = (_T[15, 0], _T[15, 1], _T[15, 2], _T[15, 3], _T[15, 4], )
+    (d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td,
+        d_bottom_q_thd__k, ) = (_T[16, 0], _T[16, 1], _T[16, 2], _T[16, 3], _T[16, 4], )
+    (d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, ) = (_T[17, 0], _T[17, 1], _T[17, 2], _T[17, 3], _T[17, 4], )
+    (d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td,
+        d_liftoff_q_thd__k, ) = (_T[18, 0], _T[18, 1], _T[18, 2], _T[18, 3], _T[18, 4], )
     if reading == 0.0:
         _x75 = (1.0/m)
         _x76 = 2.0*g_s*q_r_lo
@@ -466,20 +440,20 @@ def gravity_type3_stance_jacobian(x, p, out):
         _q_rd_lo_sq = (2.0*E_td*_x75 + 2.0*_x75*k*l0*q_r_lo - _x76*math.cos(i_liftoff_q_th) - _x77*k - _x79*k
             - _x80*(P_c + p_td)**2)
         _x81 = 2.0*_x75
-        _pd__45 = _x81
+        _pd__50 = _x81
         _x82 = -_x80*(2.0*P_c + 2.0*p_td)
-        _pd__46 = _x82
-        _pd__47 = _x76*math.sin(i_liftoff_q_th)
-        _pd__48 = _x82
-        _d_q_rd_lo_sq__q_r_td = (_pd__45*d_E_td__q_r_td + _pd__46*d_P_c__q_r_td
-            + _pd__47*d_i_liftoff_q_th__q_r_td + _pd__48*d_p_td__q_r_td)
-        _d_q_rd_lo_sq__q_rd_td = (_pd__45*d_E_td__q_rd_td + _pd__46*d_P_c__q_rd_td
-            + _pd__47*d_i_liftoff_q_th__q_rd_td)
-        _d_q_rd_lo_sq__q_th_td = (_pd__45*d_E_td__q_th_td + _pd__46*d_P_c__q_th_td
-            + _pd__47*d_i_liftoff_q_th__q_th_td)
-        _d_q_rd_lo_sq__q_thd_td = (_pd__45*d_E_td__q_thd_td + _pd__46*d_P_c__q_thd_td
-            + _pd__47*d_i_liftoff_q_th__q_thd_td + _pd__48*d_p_td__q_thd_td)
-        _d_q_rd_lo_sq__k = (_pd__45*d_E_td__k + _pd__46*d_P_c__k + _pd__47*d_i_liftoff_q_th__k - _x77 - _x79
+        _pd__51 = _x82
+        _pd__52 = _x76*math.sin(i_liftoff_q_th)
+        _pd__53 = _x82
+        _d_q_rd_lo_sq__q_r_td = (_pd__50*d_E_td__q_r_td + _pd__51*d_P_c__q_r_td
+            + _pd__52*d_i_liftoff_q_th__q_r_td + _pd__53*d_p_td__q_r_td)
+        _d_q_rd_lo_sq__q_rd_td = (_pd__50*d_E_td__q_rd_td + _pd__51*d_P_c__q_rd_td
+            + _pd__52*d_i_liftoff_q_th__q_rd_td)
+        _d_q_rd_lo_sq__q_th_td = (_pd__50*d_E_td__q_th_td + _pd__51*d_P_c__q_th_td
+            + _pd__52*d_i_liftoff_q_th__q_th_td)
+        _d_q_rd_lo_sq__q_thd_td = (_pd__50*d_E_td__q_thd_td + _pd__51*d_P_c__q_thd_td
+            + _pd__52*d_i_liftoff_q_th__q_thd_td + _pd__53*d_p_td__q_thd_td)
+        _d_q_rd_lo_sq__k = (_pd__50*d_E_td__k + _pd__51*d_P_c__k + _pd__52*d_i_liftoff_q_th__k - _x77 - _x79
             + _x81*l0*q_r_lo)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
@@ -487,12 +461,12 @@ def gravity_type3_stance_jacobian(x, p, out):
         # q_rd_lo from the energy
         _x83 = math.sqrt(_q_rd_lo_sq)
         liftoff_q_rd = _x83
-        _pd__49 = (0.5)/_x83
-        d_liftoff_q_rd__q_r_td = _d_q_rd_lo_sq__q_r_td*_pd__49
-        d_liftoff_q_rd__q_rd_td = _d_q_rd_lo_sq__q_rd_td*_pd__49
-        d_liftoff_q_rd__q_th_td = _d_q_rd_lo_sq__q_th_td*_pd__49
-        d_liftoff_q_rd__q_thd_td = _d_q_rd_lo_sq__q_thd_td*_pd__49
-        d_liftoff_q_rd__k = _d_q_rd_lo_sq__k*_pd__49
+        _pd__54 = (0.5)/_x83
+        d_liftoff_q_rd__q_r_td = _d_q_rd_lo_sq__q_r_td*_pd__54
+        d_liftoff_q_rd__q_rd_td = _d_q_rd_lo_sq__q_rd_td*_pd__54
+        d_liftoff_q_rd__q_th_td = _d_q_rd_lo_sq__q_th_td*_pd__54
+        d_liftoff_q_rd__q_thd_td = _d_q_rd_lo_sq__q_thd_td*_pd__54
+        d_liftoff_q_rd__k = _d_q_rd_lo_sq__k*_pd__54
     elif reading == 1.0:
         # from (11)
         liftoff_q_rd = i_liftoff_q_rd
@@ -504,32 +478,6 @@ def gravity_type3_stance_jacobian(x, p, out):
         d_liftoff_q_rd__k = d_i_liftoff_q_rd__k
     else:
         return fail(out, STATUS_INVALID_INPUT)
-    # derivatives of the outputs
-    d_t_bottom__q_r_td = d_i_t_bottom__q_r_td
-    d_t_bottom__q_rd_td = d_i_t_bottom__q_rd_td
-    d_t_bottom__q_th_td = d_i_t_bottom__q_th_td
-    d_t_bottom__q_thd_td = d_i_t_bottom__q_thd_td
-    d_t_bottom__k = d_i_t_bottom__k
-    d_t_stance__q_r_td = d_i_t_stance__q_r_td
-    d_t_stance__q_rd_td = d_i_t_stance__q_rd_td
-    d_t_stance__q_th_td = d_i_t_stance__q_th_td
-    d_t_stance__q_thd_td = d_i_t_stance__q_thd_td
-    d_t_stance__k = d_i_t_stance__k
-    d_bottom_q_r__q_r_td = d_i_bottom_q_r__q_r_td
-    d_bottom_q_r__q_rd_td = d_i_bottom_q_r__q_rd_td
-    d_bottom_q_r__q_th_td = d_i_bottom_q_r__q_th_td
-    d_bottom_q_r__q_thd_td = d_i_bottom_q_r__q_thd_td
-    d_bottom_q_r__k = d_i_bottom_q_r__k
-    d_bottom_q_th__q_r_td = d_i_bottom_q_th__q_r_td
-    d_bottom_q_th__q_rd_td = d_i_bottom_q_th__q_rd_td
-    d_bottom_q_th__q_th_td = d_i_bottom_q_th__q_th_td
-    d_bottom_q_th__q_thd_td = d_i_bottom_q_th__q_thd_td
-    d_bottom_q_th__k = d_i_bottom_q_th__k
-    d_liftoff_q_th__q_r_td = d_i_liftoff_q_th__q_r_td
-    d_liftoff_q_th__q_rd_td = d_i_liftoff_q_th__q_rd_td
-    d_liftoff_q_th__q_th_td = d_i_liftoff_q_th__q_th_td
-    d_liftoff_q_th__q_thd_td = d_i_liftoff_q_th__q_thd_td
-    d_liftoff_q_th__k = d_i_liftoff_q_th__k
     # every output finite, or the inputs were far outside a physical range
     (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
         out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],

@@ -416,8 +416,8 @@ def gravity_type5_stance_jacobian(x, p, out):
             & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
-    # the tangents the loops compute once per direction: _T[row, direction]
-    _T = np.empty((38, 5))
+    # the tangents the loops compute once per direction: _T[row, direction], on the stack
+    _T = carray(stack(190), (38, 5))
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m

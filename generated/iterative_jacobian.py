@@ -10,12 +10,12 @@
 #   flight_jacobian.py sha256:6484d7d4c51d3864
 #   geyer_jacobian.py sha256:54d97ba3c74440a2
 #   geyer_vs_jacobian.py sha256:868cfef6d693b944
-#   gravity_type0_jacobian.py sha256:e3547d45c78b2c92
-#   gravity_type1_jacobian.py sha256:eb74c21c35483012
-#   gravity_type2_jacobian.py sha256:fede4a4beadc16dc
-#   gravity_type3_jacobian.py sha256:cdfecae992b516ae
-#   gravity_type4_jacobian.py sha256:1d960a3988906ef1
-#   gravity_type5_jacobian.py sha256:402c0e0dd2cf6736
+#   gravity_type0_jacobian.py sha256:ceb046a98d18e939
+#   gravity_type1_jacobian.py sha256:1214bb7b5a4813e5
+#   gravity_type2_jacobian.py sha256:e5eb7952ed7b7dde
+#   gravity_type3_jacobian.py sha256:0456bdcc96b59ed8
+#   gravity_type4_jacobian.py sha256:fa80770ffccc668b
+#   gravity_type5_jacobian.py sha256:114ecd11f6b0b650
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""

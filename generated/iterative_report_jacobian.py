@@ -9,7 +9,7 @@
 #   support.py sha256:cd017e56afa49b84
 #   flight_jacobian.py sha256:6484d7d4c51d3864
 #   geyer_vs_jacobian.py sha256:868cfef6d693b944
-#   iterative_jacobian.py sha256:5f2c536f2421d448
+#   iterative_jacobian.py sha256:85386dd801f94dcf
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""

@@ -208,6 +208,28 @@ def _bad_private_after_switch(bad):
     )
 
 
+def _later_switch(bad_selector: bool, bad_branch: bool):
+    # A branch sees what the same branch of an earlier switch on the same selector defined (the
+    # tangent code of a loop's switch, run per direction, reads the partials of the values' switch):
+    # not another selector's, not another branch's.
+    first = Switch(
+        y, ((0, (Stage(((u, x),)),)), (1, (Stage(((sym("_t"), 2 * x),)), Stage(((u, sym("_t")),)))))
+    )
+    reads = (Stage(((v, sym("_t") * x),)),)
+    cases = ((0, reads), (1, (Stage(((v, x),)),))) if bad_branch else ((0, (Stage(((v, x),)),)), (1, reads))
+    name = "k_later_branch" if bad_branch else "k_later_selector"
+    later = Switch(z if bad_selector else y, cases)
+    return _kernel(name, _args(x, y, z), (first, later), _out("u", "v"))
+
+
+def _bad_later_switch_selector(bad):
+    return _later_switch(bad, False)
+
+
+def _bad_later_switch_branch(bad):
+    return _later_switch(False, bad)
+
+
 def _bad_domain_symbol(bad):
     args = (Arg(x, "x", real(w if bad else x) > 0),)
     return _kernel("k_domain", args, (Stage(((u, x),)),), _out("u"))
@@ -236,6 +258,14 @@ FREE_SYMBOL_CASES = {
     "switch selector": (_bad_switch_selector, ["kernel k_switch_sel", "step 0 (switch on w)", "uses w"]),
     "switch branch": (_bad_switch_branch_symbol, ["kernel k_switch_branch", "stage 0.1.0", "u uses w"]),
     "branch-private name after the switch": (_bad_private_after_switch, ["kernel k_private", "v uses _t"]),
+    "branch-private name in another selector's switch": (
+        _bad_later_switch_selector,
+        ["kernel k_later_selector", "stage 1.1.0", "v uses _t"],
+    ),
+    "branch-private name in another branch": (
+        _bad_later_switch_branch,
+        ["kernel k_later_branch", "stage 1.0.0", "v uses _t"],
+    ),
     "argument domain": (_bad_domain_symbol, ["kernel k_domain", "domain of argument x", "uses w"]),
 }
 
@@ -1266,17 +1296,20 @@ def test_jacobian_kernels_share_callee_derivatives(dgen):
 
 
 def test_loop_tangents_are_computed_once_per_direction_in_a_loop():
-    """A loop whose steps are stages (and calls) computes its values once per pass and runs its
-    tangent code, written once, per direction on the direction array; a loop holding another loop
-    carries a variable per tangent and direction."""
+    """A loop whose steps are stages, calls and switches of them computes its values once per pass
+    and runs its tangent code, written once, per direction on the direction array (on the kernel's
+    stack); a loop holding another loop carries a variable per tangent and direction."""
     _, diff = dgen_kernels(1)
     derived = diff.kernels
     src = render_module(list(derived.values()))
     picard = src.split("def d_picard_jacobian(", 1)[1].split("\ndef ", 1)[0]
-    assert "for _j0 in range(2):" in picard and "_T = np.empty((" in picard
+    assert "for _j0 in range(2):" in picard and "_T = carray(stack(" in picard  # on the stack
     assert "d_u__j" in picard and "d_u__a" in picard  # per direction in the loop, loaded after it
+    # a loop holding a switch: the tangent code per direction too, in the same branch as the values
     branching = src.split("def d_loop_switch_jacobian(", 1)[1].split("\ndef ", 1)[0]
-    assert "for _j" not in branching  # a loop holding a switch: a variable per tangent and direction
+    loop = branching.split("for _it0 in", 1)[1]
+    per_direction = loop.split("for _j", 1)[1]
+    assert "if k == 0.0:" in loop.split("for _j", 1)[0] and "if k == 0.0:" in per_direction
     nested = lower(derived["d_nested_jacobian"])
     assert any(n["kind"] == "loop" and n["packed"] for n in nested["body"])
     _, unrolled = dgen_kernels(10**6)
