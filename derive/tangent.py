@@ -361,7 +361,17 @@ class Differentiator:
         needed = set(kernel.outputs.names()) | {f.name for f in fields}
         steps = prune(prune_rows(prune(steps, needed)), needed)
         steps = Outliner(name, module, self._add).steps(steps, needed)
-        values = tuple((f.name, f.doc + (f" [{f.unit}]" if f.unit else "")) for f in kernel.outputs.fields())
+        # the arguments and the outputs are the differentiated kernel's: its docstring lists them
+        ref = f":func:`{kernel.module}.{kernel.name}`"
+        doc_args = f"those of {ref}, in its order"
+        passed = {a.name for a in kernel.args for j in dirs if seeds.get(a.name, {}).get(j, 0) not in (0, 1)}
+        along = [a.name for a in kernel.args if a.name in passed]
+        if along:
+            doc_args += (
+                f"; then the components d_<argument>__<j> of each direction j (0 to {len(dirs) - 1}) "
+                f"along {', '.join(along)}"
+            )
+        values = (("<output>", f"each output of {ref}, in its order"),)
         if dirs == (None,):
             block = ("<output>__tan", "the derivative of each output above along the direction, in order")
         else:
@@ -385,6 +395,7 @@ class Differentiator:
             check_outputs=check,
             inline_rows=kernel.inline_rows and layout is not None,
             unchecked=tuple(a.name for a in extra) + tuple(f.name for f in fields),
+            doc_args=doc_args + ".",
             doc_returns=values + (block,),
         )
         suffix = choice_of(kernel)

@@ -222,26 +222,10 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], signed
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        q_r_td: touchdown leg length [m], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
-            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
-            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
-            retraction_rate [rad/s]
+    Arguments: those of :func:`flight.apex_to_touchdown`, in its order.
 
     Writes into out:
-        touchdown_q_r: leg length [m]
-        touchdown_q_rd: leg length rate [m/s]
-        touchdown_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        touchdown_q_thd: leg angle rate [rad/s]
-        t_flight: time from the apex to touchdown [s]
-        foot_x: horizontal position of the toe at touchdown relative to the apex [m]
+        <output>: each output of :func:`flight.apex_to_touchdown`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, retraction_rate (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -400,20 +384,10 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r: liftoff leg length q_r [m], > 0
-        q_rd: leg length rate q_rd [m/s]
-        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
-        q_thd: leg angle rate q_thd [rad/s]
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        direction: direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)
+    Arguments: those of :func:`flight.liftoff_to_apex`, in its order.
 
     Writes into out:
-        apex_b_y: next apex height above the ground [m]
-        apex_b_xd: next apex horizontal speed [m/s]
-        t_flight: time from liftoff to the apex [s]
-        dx_flight: horizontal distance travelled from liftoff to the apex [m]
-        apex_b_x: horizontal position of the next apex relative to the toe [m]
+        <output>: each output of :func:`flight.liftoff_to_apex`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument q_rd, q_th, q_thd
             (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -504,20 +478,10 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r: liftoff leg length q_r [m], > 0
-        q_rd: leg length rate q_rd [m/s]
-        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
-        q_thd: leg angle rate q_thd [rad/s]
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        direction: direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)
+    Arguments: those of :func:`flight.liftoff_to_apex`, in its order.
 
     Writes into out:
-        apex_b_y: next apex height above the ground [m]
-        apex_b_xd: next apex horizontal speed [m/s]
-        t_flight: time from liftoff to the apex [s]
-        dx_flight: horizontal distance travelled from liftoff to the apex [m]
-        apex_b_x: horizontal position of the next apex relative to the toe [m]
+        <output>: each output of :func:`flight.liftoff_to_apex`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_rd, q_th,
             q_thd (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN

@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:6484d7d4c51d3864
-#   geyer_jacobian.py sha256:54d97ba3c74440a2
-#   geyer_vs_jacobian.py sha256:868cfef6d693b944
-#   gravity_type0_jacobian.py sha256:ceb046a98d18e939
-#   gravity_type1_jacobian.py sha256:1214bb7b5a4813e5
-#   gravity_type2_jacobian.py sha256:e5eb7952ed7b7dde
-#   gravity_type3_jacobian.py sha256:0456bdcc96b59ed8
-#   gravity_type4_jacobian.py sha256:fa80770ffccc668b
-#   gravity_type5_jacobian.py sha256:114ecd11f6b0b650
+#   flight_jacobian.py sha256:138a95b59cb50fe8
+#   geyer_jacobian.py sha256:439802d2318bb4fa
+#   geyer_vs_jacobian.py sha256:134305d9642ed1b0
+#   gravity_type0_jacobian.py sha256:b4a8355ed96b48ca
+#   gravity_type1_jacobian.py sha256:a4efb6b00f19629b
+#   gravity_type2_jacobian.py sha256:e2ef306eb9622084
+#   gravity_type3_jacobian.py sha256:6d46a7edfbce4732
+#   gravity_type4_jacobian.py sha256:78dd3a0a93335be1
+#   gravity_type5_jacobian.py sha256:cd2fbda68786b927
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -171,24 +171,10 @@ def zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+    Arguments: those of :func:`iterative.zeroth_geyer`, in its order.
 
     Writes into out:
-        z_b_q_r: zeroth iterate: z_b_q_r
-        z_b_q_th: zeroth iterate: z_b_q_th
-        z_b_q_thd: zeroth iterate: z_b_q_thd
-        z_lo_q_th: zeroth iterate: z_lo_q_th
-        z_lo_q_thd: zeroth iterate: z_lo_q_thd
+        <output>: each output of :func:`iterative.zeroth_geyer`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -223,24 +209,10 @@ def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_t
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+    Arguments: those of :func:`iterative.zeroth_held`, in its order.
 
     Writes into out:
-        z_b_q_r: zeroth iterate: z_b_q_r
-        z_b_q_th: zeroth iterate: z_b_q_th
-        z_b_q_thd: zeroth iterate: z_b_q_thd
-        z_lo_q_th: zeroth iterate: z_lo_q_th
-        z_lo_q_thd: zeroth iterate: z_lo_q_thd
+        <output>: each output of :func:`iterative.zeroth_held`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -305,8 +277,17 @@ def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments: those of :func:`iterative.zeroth_gravity_type0`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.zeroth_gravity_type0`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     # stance: Gravity correction type 0 (leg length l0)
@@ -336,8 +317,17 @@ def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments: those of :func:`iterative.zeroth_gravity_type1`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.zeroth_gravity_type1`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
@@ -367,8 +357,17 @@ def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments: those of :func:`iterative.zeroth_gravity_type2`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.zeroth_gravity_type2`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     # stance: Gravity correction type 2 (average leg length)
@@ -398,8 +397,17 @@ def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments: those of :func:`iterative.zeroth_gravity_type3`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.zeroth_gravity_type3`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
@@ -429,8 +437,17 @@ def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments: those of :func:`iterative.zeroth_gravity_type4`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.zeroth_gravity_type4`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
@@ -460,8 +477,17 @@ def zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments: those of :func:`iterative.zeroth_gravity_type5`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.zeroth_gravity_type5`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     # stance: Gravity correction type 5 (time-varying momentum)
@@ -491,8 +517,17 @@ def zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments: those of :func:`iterative.zeroth_geyer_vs`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.zeroth_geyer_vs`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     # stance: Simple variable-stiffness map (Geyer et al. per half)
@@ -527,49 +562,11 @@ def schwind_compression_jvp6_4eaacb(_a, out):
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
-            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-        d_guess_q_r__5: direction 5: its component along guess_q_r
-        d_guess_q_th__5: direction 5: its component along guess_q_th
-        d_guess_q_thd__5: direction 5: its component along guess_q_thd
+    Arguments: those of :func:`iterative.schwind_compression`, in its order; then the components
+    d_<argument>__<j> of each direction j (0 to 5) along guess_q_r, guess_q_th, guess_q_thd.
 
     Writes into out:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
+        <output>: each output of :func:`iterative.schwind_compression`, in its order
         d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
             (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -1140,31 +1137,10 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
-            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
+    Arguments: those of :func:`iterative.schwind_decompression`, in its order.
 
     Writes into out:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
+        <output>: each output of :func:`iterative.schwind_decompression`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_th, q_thd,
             k_d, guess_q_th, guess_q_thd (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -1687,71 +1663,12 @@ def iterative_core_jvp6_b60fdf(_a, out):
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        z_b_q_r: zeroth iterate: z_b_q_r
-        z_b_q_th: zeroth iterate: z_b_q_th
-        z_b_q_thd: zeroth iterate: z_b_q_thd
-        z_lo_q_th: zeroth iterate: z_lo_q_th
-        z_lo_q_thd: zeroth iterate: z_lo_q_thd
-        held: 1 when the zeroth iterate is the held touchdown state, else 0
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
-            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_z_b_q_r__0: direction 0: its component along z_b_q_r
-        d_z_b_q_th__0: direction 0: its component along z_b_q_th
-        d_z_b_q_thd__0: direction 0: its component along z_b_q_thd
-        d_z_lo_q_th__0: direction 0: its component along z_lo_q_th
-        d_z_lo_q_thd__0: direction 0: its component along z_lo_q_thd
-        d_z_b_q_r__1: direction 1: its component along z_b_q_r
-        d_z_b_q_th__1: direction 1: its component along z_b_q_th
-        d_z_b_q_thd__1: direction 1: its component along z_b_q_thd
-        d_z_lo_q_th__1: direction 1: its component along z_lo_q_th
-        d_z_lo_q_thd__1: direction 1: its component along z_lo_q_thd
-        d_z_b_q_r__2: direction 2: its component along z_b_q_r
-        d_z_b_q_th__2: direction 2: its component along z_b_q_th
-        d_z_b_q_thd__2: direction 2: its component along z_b_q_thd
-        d_z_lo_q_th__2: direction 2: its component along z_lo_q_th
-        d_z_lo_q_thd__2: direction 2: its component along z_lo_q_thd
-        d_z_b_q_r__3: direction 3: its component along z_b_q_r
-        d_z_b_q_th__3: direction 3: its component along z_b_q_th
-        d_z_b_q_thd__3: direction 3: its component along z_b_q_thd
-        d_z_lo_q_th__3: direction 3: its component along z_lo_q_th
-        d_z_lo_q_thd__3: direction 3: its component along z_lo_q_thd
-        d_z_b_q_r__4: direction 4: its component along z_b_q_r
-        d_z_b_q_th__4: direction 4: its component along z_b_q_th
-        d_z_b_q_thd__4: direction 4: its component along z_b_q_thd
-        d_z_lo_q_th__4: direction 4: its component along z_lo_q_th
-        d_z_lo_q_thd__4: direction 4: its component along z_lo_q_thd
-        d_z_b_q_r__5: direction 5: its component along z_b_q_r
-        d_z_b_q_th__5: direction 5: its component along z_b_q_th
-        d_z_b_q_thd__5: direction 5: its component along z_b_q_thd
-        d_z_lo_q_th__5: direction 5: its component along z_lo_q_th
-        d_z_lo_q_thd__5: direction 5: its component along z_lo_q_thd
+    Arguments: those of :func:`iterative.iterative_core`, in its order; then the components
+    d_<argument>__<j> of each direction j (0 to 5) along z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th,
+    z_lo_q_thd.
 
     Writes into out:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
+        <output>: each output of :func:`iterative.iterative_core`, in its order
         d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
             (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -2068,35 +1985,10 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
     out, in order, and returns
     the status (out all NaN unless OK).
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
-            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_geyer`, in its order.
 
     Writes into out:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_geyer`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -2129,21 +2021,7 @@ def iterative_apex_return_jacobian_tail_42d188(_a, out):
     Arguments: the per-choice caller's variables of the same names.
 
     Writes into out:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
-            [rad]
-        passes: Picard passes run (the larger of the two halves) [1]
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_geyer`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, retraction_rate, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -2449,47 +2327,10 @@ def iterative_apex_return_jacobian_zeroth_geyer(x, p, out):
     out, in order, and returns
     the status (out all NaN unless OK).
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
-            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
-            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
-            retraction_rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
-            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_geyer`, in its order.
 
     Writes into out:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
-            [rad]
-        passes: Picard passes run (the larger of the two halves) [1]
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_geyer`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, retraction_rate, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -2515,7 +2356,22 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_held`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_held`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
@@ -2593,7 +2449,22 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_held.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_held`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_held`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_held)
@@ -2618,7 +2489,22 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type0`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type0`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2645,7 +2531,22 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type0.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type0`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type0`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2672,7 +2573,22 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type1`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type1`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2699,7 +2615,22 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type1.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type1`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type1`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2726,7 +2657,22 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type2`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type2`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2753,7 +2699,22 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type2.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type2`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type2`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2780,7 +2741,22 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type3`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type3`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2807,7 +2783,22 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type3.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type3`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type3`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2834,7 +2825,22 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type4`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type4`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2861,7 +2867,22 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type4.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type4`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type4`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2888,7 +2909,22 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type5`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type5`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2915,7 +2951,22 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type5.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type5`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type5`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2942,7 +2993,22 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_stance_zeroth_geyer_vs`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_stance_zeroth_geyer_vs`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2968,7 +3034,22 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_geyer_vs.
 
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_geyer_vs`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_geyer_vs`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_geyer_vs)

@@ -7,9 +7,9 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:6484d7d4c51d3864
-#   geyer_vs_jacobian.py sha256:868cfef6d693b944
-#   iterative_jacobian.py sha256:85386dd801f94dcf
+#   flight_jacobian.py sha256:138a95b59cb50fe8
+#   geyer_vs_jacobian.py sha256:134305d9642ed1b0
+#   iterative_jacobian.py sha256:3a53666dd03e071f
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -53,48 +53,11 @@ def report_compression_jvp6_4eaacb(_a, out):
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        z_b_q_r: zeroth iterate: z_b_q_r
-        z_b_q_th: zeroth iterate: z_b_q_th
-        z_b_q_thd: zeroth iterate: z_b_q_thd
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-        d_z_b_q_r__0: direction 0: its component along z_b_q_r
-        d_z_b_q_th__0: direction 0: its component along z_b_q_th
-        d_z_b_q_thd__0: direction 0: its component along z_b_q_thd
-        d_z_b_q_r__1: direction 1: its component along z_b_q_r
-        d_z_b_q_th__1: direction 1: its component along z_b_q_th
-        d_z_b_q_thd__1: direction 1: its component along z_b_q_thd
-        d_z_b_q_r__2: direction 2: its component along z_b_q_r
-        d_z_b_q_th__2: direction 2: its component along z_b_q_th
-        d_z_b_q_thd__2: direction 2: its component along z_b_q_thd
-        d_z_b_q_r__3: direction 3: its component along z_b_q_r
-        d_z_b_q_th__3: direction 3: its component along z_b_q_th
-        d_z_b_q_thd__3: direction 3: its component along z_b_q_thd
-        d_z_b_q_r__4: direction 4: its component along z_b_q_r
-        d_z_b_q_th__4: direction 4: its component along z_b_q_th
-        d_z_b_q_thd__4: direction 4: its component along z_b_q_thd
-        d_z_b_q_r__5: direction 5: its component along z_b_q_r
-        d_z_b_q_th__5: direction 5: its component along z_b_q_th
-        d_z_b_q_thd__5: direction 5: its component along z_b_q_thd
+    Arguments: those of :func:`iterative_report.report_compression`, in its order; then the components
+    d_<argument>__<j> of each direction j (0 to 5) along z_b_q_r, z_b_q_th, z_b_q_thd.
 
     Writes into out:
-        t_bottom: time from touchdown to the bottom [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        E_ab: the energy (114) of the touchdown state [J]
+        <output>: each output of :func:`iterative_report.report_compression`, in its order
         d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
             (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -493,69 +456,12 @@ def report_core_jvp6_b60fdf(_a, out):
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        z_b_q_r: zeroth iterate: z_b_q_r
-        z_b_q_th: zeroth iterate: z_b_q_th
-        z_b_q_thd: zeroth iterate: z_b_q_thd
-        z_lo_q_th: zeroth iterate: z_lo_q_th
-        z_lo_q_thd: zeroth iterate: z_lo_q_thd
-        held: 1 when the zeroth iterate is the held touchdown state, else 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-        d_z_b_q_r__0: direction 0: its component along z_b_q_r
-        d_z_b_q_th__0: direction 0: its component along z_b_q_th
-        d_z_b_q_thd__0: direction 0: its component along z_b_q_thd
-        d_z_lo_q_th__0: direction 0: its component along z_lo_q_th
-        d_z_lo_q_thd__0: direction 0: its component along z_lo_q_thd
-        d_z_b_q_r__1: direction 1: its component along z_b_q_r
-        d_z_b_q_th__1: direction 1: its component along z_b_q_th
-        d_z_b_q_thd__1: direction 1: its component along z_b_q_thd
-        d_z_lo_q_th__1: direction 1: its component along z_lo_q_th
-        d_z_lo_q_thd__1: direction 1: its component along z_lo_q_thd
-        d_z_b_q_r__2: direction 2: its component along z_b_q_r
-        d_z_b_q_th__2: direction 2: its component along z_b_q_th
-        d_z_b_q_thd__2: direction 2: its component along z_b_q_thd
-        d_z_lo_q_th__2: direction 2: its component along z_lo_q_th
-        d_z_lo_q_thd__2: direction 2: its component along z_lo_q_thd
-        d_z_b_q_r__3: direction 3: its component along z_b_q_r
-        d_z_b_q_th__3: direction 3: its component along z_b_q_th
-        d_z_b_q_thd__3: direction 3: its component along z_b_q_thd
-        d_z_lo_q_th__3: direction 3: its component along z_lo_q_th
-        d_z_lo_q_thd__3: direction 3: its component along z_lo_q_thd
-        d_z_b_q_r__4: direction 4: its component along z_b_q_r
-        d_z_b_q_th__4: direction 4: its component along z_b_q_th
-        d_z_b_q_thd__4: direction 4: its component along z_b_q_thd
-        d_z_lo_q_th__4: direction 4: its component along z_lo_q_th
-        d_z_lo_q_thd__4: direction 4: its component along z_lo_q_thd
-        d_z_b_q_r__5: direction 5: its component along z_b_q_r
-        d_z_b_q_th__5: direction 5: its component along z_b_q_th
-        d_z_b_q_thd__5: direction 5: its component along z_b_q_thd
-        d_z_lo_q_th__5: direction 5: its component along z_lo_q_th
-        d_z_lo_q_thd__5: direction 5: its component along z_lo_q_thd
+    Arguments: those of :func:`iterative_report.report_core`, in its order; then the components
+    d_<argument>__<j> of each direction j (0 to 5) along z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th,
+    z_lo_q_thd.
 
     Writes into out:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
+        <output>: each output of :func:`iterative_report.report_core`, in its order
         d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
             (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -1130,33 +1036,10 @@ def iterative_report_stance_jacobian_zeroth_geyer(x, p, out):
     below into out, in order, and returns
     the status (out all NaN unless OK).
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_geyer`, in its order.
 
     Writes into out:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_geyer`, in its order
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -1192,20 +1075,8 @@ def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
     Arguments: the per-choice caller's variables of the same names.
 
     Writes into out:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
-            [rad]
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_geyer`, in its
+            order
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, retraction_rate, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -1511,45 +1382,12 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
     below into out, in order, and returns
     the status (out all NaN unless OK).
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        retraction_rate: swing-leg retraction rate: after the apex the leg angle is touchdown_angle +
-            retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg
-            has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle
-            retraction_rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_geyer`, in its
+    order.
 
     Writes into out:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        touchdown_q_th: leg angle the foot touched down with: touchdown_angle + retraction_rate * t_descent
-            [rad]
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_geyer`, in its
+            order
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, retraction_rate, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
@@ -1579,7 +1417,22 @@ def iterative_report_stance_jacobian_zeroth_held(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_held`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_held`, in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
@@ -1658,7 +1511,23 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_held.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_held`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_held`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1687,7 +1556,24 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type0`, in its
+    order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type0`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1716,7 +1602,24 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type0.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type0`, in
+    its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type0`,
+            in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1745,7 +1648,24 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type1`, in its
+    order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type1`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1774,7 +1694,24 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type1.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type1`, in
+    its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type1`,
+            in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1803,7 +1740,24 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type2`, in its
+    order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type2`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1832,7 +1786,24 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type2.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type2`, in
+    its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type2`,
+            in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1861,7 +1832,24 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type3`, in its
+    order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type3`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1890,7 +1878,24 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type3.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type3`, in
+    its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type3`,
+            in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1919,7 +1924,24 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type4`, in its
+    order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type4`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1948,7 +1970,24 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type4.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type4`, in
+    its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type4`,
+            in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1977,7 +2016,24 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type5`, in its
+    order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type5`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -2006,7 +2062,24 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type5.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type5`, in
+    its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type5`,
+            in its order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2035,7 +2108,23 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
 
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_geyer_vs`, in its order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_geyer_vs`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -2064,7 +2153,24 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_geyer_vs.
 
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
+
+    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_geyer_vs`, in its
+    order.
+
+    Writes into out:
+        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_geyer_vs`, in its
+            order
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
