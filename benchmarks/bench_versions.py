@@ -10,7 +10,9 @@ named in the report). Measured for the human runner:
 - per map, ``slipmaps.apex_return_batch`` on N states and ``slipmaps.apex_return_jacobian_batch`` on
   N/10 states, ns per state, each after a warm-up call (compilation excluded), best of ``--repeat``
   per round; the ratio new/old (target: at most 1.1) and the Jacobian's cost in apex-return calls of
-  the same N/10 states (target: at most 3); the statuses' counts of both trees, compared;
+  the same N/10 states (target: at most 3); the statuses' counts of both trees, compared; the
+  Jacobian's outputs x inputs in each tree and its new/old time per input (forward mode runs about
+  one pass per input: the time of the same work where the new tree differentiates more inputs);
 - per map, a warm scalar ``slipmaps.apex_return`` in us (``bench_calls.scalar_us``; target: at most
   10 us);
 - Geyer's public ``slipmaps.stance_batch`` against the hand-written kernel (``handwritten_geyer.py``)
@@ -135,6 +137,9 @@ def worker_round(states_path: str, names: list[str], exact: list[str], repeat: i
             row[key] = _timed(lambda fn=fn, m=m, name=name: fn(name, P, h[:m], v[:m], th[:m]), repeat)
             row[key]["ns"] = 1e9 * row[key]["seconds"] / m
         row["scalar"] = {"load_1min": _load(), **scalar_us(name, repeat)}
+        # the Jacobian's outputs x inputs: forward mode costs about one pass per input (direction)
+        jac = slipmaps.apex_return_jacobian(name, P, float(h[0]), float(v[0]), float(th[0]))
+        row["jacobian_shape"] = list(jac.matrix.shape)
         out["maps"][name] = row
     return out
 
@@ -211,6 +216,7 @@ def measure(old: str, new: str, n: int, repeat: int, rounds: int, only: list[str
                 for key in ("apex_return", "apex_return_nj", "jacobian")
             }
             row[v]["scalar"] = _best(runs[v], ("maps", name, "scalar"), "apex_return_us")
+            row[v]["jacobian_shape"] = runs[v][0]["maps"][name]["jacobian_shape"]
         out["maps"].append(row)
     if first_calls:
         for name in names:
@@ -255,7 +261,8 @@ def _report_batches(r: dict) -> list[str]:
         f"    {'map':<17}{'apex return old/new':>23}{'ratio':>7}{'jacobian old/new':>21}{'ratio':>7}"
         f"{'jac/apex':>10}{'scalar us old/new':>18}   load",
     ]
-    worst = {"apex": 0.0, "jac": 0.0, "jac_apex": 0.0, "scalar": 0.0}
+    worst = {"apex": 0.0, "jac": 0.0, "jac_apex": 0.0, "scalar": 0.0, "per_input": 0.0}
+    shapes = []
     statuses = []
     for row in r["maps"]:
         o, w = row["old"], row["new"]
@@ -265,6 +272,11 @@ def _report_batches(r: dict) -> list[str]:
         worst["apex"], worst["jac"] = max(worst["apex"], ra), max(worst["jac"], rj)
         worst["jac_apex"] = max(worst["jac_apex"], ja)
         worst["scalar"] = max(worst["scalar"], w["scalar"]["apex_return_us"])
+        if "jacobian_shape" in o and "jacobian_shape" in w:
+            (ro, co), (rw, cw) = o["jacobian_shape"], w["jacobian_shape"]
+            per_input = rj * co / cw
+            worst["per_input"] = max(worst["per_input"], per_input)
+            shapes.append(f"{row['map']} {ro}x{co} -> {rw}x{cw}: {per_input:.2f}")
         loads = " / ".join(
             ",".join(f"{x[k]['load_1min']:.1f}" for k in ("apex_return", "jacobian")) for x in (o, w)
         )
@@ -286,6 +298,14 @@ def _report_batches(r: dict) -> list[str]:
         f"jacobian {worst['jac']:.2f} ({_met(worst['jac'] <= TARGET_NEW_OLD)}); "
         f"jacobian / apex return {worst['jac_apex']:.2f} ({_met(worst['jac_apex'] <= TARGET_JACOBIAN)}); "
         f"scalar {worst['scalar']:.2f} us ({_met(worst['scalar'] <= TARGET_SCALAR_US)})",
+    ]
+    if shapes:
+        lines += [
+            "    jacobian outputs x inputs old -> new and its new/old time per input (a forward-mode pass "
+            "per input;",
+            f"    slowest {worst['per_input']:.2f}): " + "; ".join(shapes),
+        ]
+    lines += [
         "    statuses: " + ("the same counts in both trees" if not statuses else "differ:"),
         *statuses,
     ]
