@@ -300,11 +300,11 @@ def _report_batches(r: dict) -> list[str]:
         f"scalar {worst['scalar']:.2f} us ({_met(worst['scalar'] <= TARGET_SCALAR_US)})",
     ]
     if shapes:
-        lines += [
-            "    jacobian outputs x inputs old -> new and its new/old time per input (a forward-mode pass "
-            "per input;",
-            f"    slowest {worst['per_input']:.2f}): " + "; ".join(shapes),
-        ]
+        lines.append(
+            "    the jacobian's outputs x inputs old -> new and its new/old time per input (forward mode "
+            f"runs a pass per input), slowest {worst['per_input']:.2f}:"
+        )
+        lines += [f"        {shape}" for shape in shapes]
     lines += [
         "    statuses: " + ("the same counts in both trees" if not statuses else "differ:"),
         *statuses,
