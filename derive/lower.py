@@ -1001,6 +1001,7 @@ def lower(kernel: Kernel) -> dict:
         "shared_by": [],
         "shared_names": "",
         "shared_args": [],
+        "shared_what": "",
         "statuses": sorted(ctx.statuses),
         "rows": ctx.rows,
         "directions": ctx.directions,

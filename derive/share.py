@@ -1,14 +1,16 @@
-"""Shared bodies: the kernels of a module that differ only in the kernels they call become thin
-entry points of one body that takes those callees as arguments.
+"""Shared bodies: the kernels of a module that differ only in the kernels they call (and in a few
+float constants) become thin entry points of one body that takes those callees (and constants) as
+arguments.
 
 A specialized option (:mod:`.specialize`) gives each of its choices kernels of their own, so that a
 first call compiles only the callees of the choice it runs. Many of those kernels are the same code
 but for their callees' names: the iterative maps' apex-return kernels differ only in the stance
 kernel of their zeroth iterate. :func:`share_bodies` finds them among a module's lowered kernels
 (:func:`.lower.lower`): it renders the body once, as ``<common prefix>_shared`` with the differing
-callees as trailing arguments, and makes each kernel an entry point that returns the shared body's
-result for its own callees. The shared body is inlined at numba's IR level into each entry point
-(``inline="always"``), where its callee arguments are the entry point's constants: each entry point
+callees as trailing arguments (then the differing constants, ``constant<i>``), and makes each
+kernel an entry point that returns the shared body's result for its own callees and constants.
+The shared body is inlined at numba's IR level into each entry point (``inline="always"``), where
+its callee and constant arguments are the entry point's constants: each entry point
 compiles to the code its kernel compiled to before, on its choice's first call, and is cached as any
 kernel is. (Not inlined, a compiled function taking a function argument is passed the dispatcher's
 address, and numba does not cache code that holds an address: measured, "uses dynamic globals".) A
@@ -31,6 +33,11 @@ import re
 __all__ = ["SUFFIX", "share_bodies"]
 
 _WORD = re.compile(r"[A-Za-z_]\w*")
+#: A float literal of the generated code (``0.0``, ``1.5e-12``), not part of a name or a number.
+_FLOAT = re.compile(r"(?<![\w.])\d+\.\d+(?:e[+-]?\d+)?(?![\w.])")
+
+#: The most constants in which the kernels of one shared body may differ (each an argument).
+MAX_CONSTANTS = 4
 
 #: The name suffix of every shared body (tests tell them from the declared kernels by it).
 SUFFIX = "_shared"
@@ -48,10 +55,31 @@ def _pattern(names) -> re.Pattern | None:
     return re.compile(r"\b(" + "|".join(map(re.escape, names)) + r")\b") if names else None
 
 
-def _key(k: dict) -> tuple[str, list[str]]:
-    """The kernel's code with its callees' names replaced by their order of first use, and that
-    order: two kernels of the same key differ only in the callees they call."""
-    text = json.dumps({f: v for f, v in k.items() if f not in _DOC_FIELDS}, sort_keys=True, default=repr)
+def _literals(value, fn, seen: list):
+    """``value`` (a lowered kernel's code field) with each float literal replaced by ``fn(i, text)``,
+    ``i`` its occurrence (in a fixed order: a dict's fields sorted), its text appended to ``seen``."""
+    if isinstance(value, str):
+
+        def one(m: re.Match) -> str:
+            seen.append(m.group(0))
+            return fn(len(seen) - 1, m.group(0))
+
+        return _FLOAT.sub(one, value)
+    if isinstance(value, list):
+        return [_literals(v, fn, seen) for v in value]
+    if isinstance(value, dict):
+        return {f: v if f in ("text", "doc") else _literals(v, fn, seen) for f, v in sorted(value.items())}
+    return value
+
+
+def _key(k: dict) -> tuple[str, list[str], list[str]]:
+    """The kernel's code with its callees' names replaced by their order of first use and its float
+    literals by a mark; that order; the literals, one per occurrence: two kernels of the same key
+    differ only in the callees they call and in constants."""
+    fields = {f: v for f, v in k.items() if f not in _DOC_FIELDS}
+    literals: list[str] = []
+    code = _literals({f: fields[f] for f in _CODE_FIELDS}, lambda i, t: "\x01", literals)
+    text = json.dumps({**fields, **code}, sort_keys=True, default=repr)
     order: list[str] = []
 
     def number(m: re.Match) -> str:
@@ -60,7 +88,7 @@ def _key(k: dict) -> tuple[str, list[str]]:
         return f"\x00{order.index(m.group(0))}\x00"
 
     pattern = _pattern(k["called"])
-    return (pattern.sub(number, text) if pattern else text), order
+    return (pattern.sub(number, text) if pattern else text), order, literals
 
 
 def _common_prefix(names) -> str:
@@ -117,7 +145,9 @@ def _replace(value, pattern: re.Pattern, names: dict[str, str]):
 
 def share_bodies(kernels: list[dict]) -> list[dict]:
     """``kernels`` (one module's, lowered) with every group of two or more that differ only in their
-    callees rendered as one shared body and an entry point per kernel. A callee numba inlines
+    callees and in at most :data:`MAX_CONSTANTS` float constants (the iterative maps' ``held`` zeroth
+    iterate passes a flag the other choices pass as 0) rendered as one shared body and an entry
+    point per kernel. A callee numba inlines
     (``inline="always"``: the iterative maps' zeroth iterates) is inlined through the argument too.
     Deterministic: groups, names and arguments follow the kernels' order."""
     taken = {k["name"] for k in kernels}
@@ -127,44 +157,59 @@ def share_bodies(kernels: list[dict]) -> list[dict]:
     for k in kernels:
         if k["inline"] or k["inline_rows"]:
             continue
-        key, order = _key(k)
-        groups.setdefault(key, []).append((k, order))
+        key, order, literals = _key(k)
+        groups.setdefault(key, []).append((k, order, literals))
     bodies: dict[str, dict] = {}
     entries: dict[str, dict] = {}
     for members in groups.values():
         if len(members) < 2:
             continue
-        columns = list(zip(*(order for _, order in members), strict=True))
-        varying = [i for i, column in enumerate(columns) if len(set(column)) > 1]
-        if not varying:
+        columns = list(zip(*(order for _, order, _ in members), strict=True))
+        values = list(zip(*(literals for _, _, literals in members), strict=True))
+        callees = [i for i, column in enumerate(columns) if len(set(column)) > 1]
+        constants = [i for i, column in enumerate(values) if len(set(column)) > 1]
+        if not (callees or constants) or len(constants) > MAX_CONSTANTS:
             continue
         first = members[0][0]
-        base = _common_prefix(k["name"] for k, _ in members) or first["name"]
+        base = _common_prefix(k["name"] for k, _, _ in members) or first["name"]
         name = base + SUFFIX
         while name in taken:
             name += "_"
         taken.add(name)
-        arguments = _argument_names(
-            [columns[i] for i in varying], taken | _words({f: first[f] for f in _CODE_FIELDS})
-        )
-        own = dict(zip((columns[i][0] for i in varying), arguments, strict=True))
+        words = taken | _words({f: first[f] for f in _CODE_FIELDS})
+        arguments = _argument_names([columns[i] for i in callees], words)
+        arguments += [f"constant{j}" for j in range(len(constants))]
+        own = dict(zip((columns[i][0] for i in callees), arguments[: len(callees)], strict=True))
+        named = dict(zip(constants, arguments[len(callees) :], strict=True))
+        code = {f: first[f] for f in _CODE_FIELDS}
+        if own:
+            code = _replace(code, _pattern(own), own)
+        code = _literals(code, lambda i, t, named=named: named.get(i, t), [])
         body = copy.deepcopy(first)
-        body.update(_replace({f: first[f] for f in _CODE_FIELDS}, _pattern(own), own))
+        body.update(code)
         body.update(
             name=name,
             params=body["params"] + ", " + ", ".join(arguments),
             callees=[c for c in first["callees"] if c[1] not in own],
-            shared_by=[k["name"] for k, _ in members],
-            shared_names=_names([k["name"] for k, _ in members]),
+            shared_by=[k["name"] for k, _, _ in members],
+            shared_names=_names([k["name"] for k, _, _ in members]),
             shared_args=arguments,
+            shared_what=" and ".join(
+                part
+                for part in (
+                    ("the kernel it calls as " + ", ".join(arguments[: len(callees)])) if callees else "",
+                    ("its constant as " + ", ".join(arguments[len(callees) :])) if constants else "",
+                )
+                if part
+            ),
             ops=first["ops"],
             # inlined at numba's IR level into each entry point: a function argument is a constant
             # there; passed to a compiled function it is an address numba's cache cannot keep
             inline=True,
         )
         bodies[first["name"]] = body
-        for k, order in members:
-            passed = [order[i] for i in varying]
+        for k, order, literals in members:
+            passed = [order[i] for i in callees] + [literals[i] for i in constants]
             entry = dict(k)
             entry.update(
                 body=[{"kind": "return", "code": f"{name}({k['params']}, {', '.join(passed)})"}],
@@ -174,7 +219,7 @@ def share_bodies(kernels: list[dict]) -> list[dict]:
                 rows=0,
                 tail=True,
                 ops=0,
-                callees=[c for c in k["callees"] if c[1] in passed],
+                callees=[c for c in k["callees"] if c[1] in passed[: len(callees)]],
                 entry_of=name,
                 passes=passed,
             )

@@ -838,17 +838,17 @@ def zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def iterative_stance_zeroth_shared(x, p, out, zeroth):
+def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    The body that 8 kernels share, each passing the kernel it calls as zeroth (derive/share.py):
-    iterative_stance_zeroth_{geyer, gravity_type0, gravity_type1, gravity_type2, gravity_type3,
-    gravity_type4, gravity_type5, geyer_vs}.
+    The body that 9 kernels share, each passing the kernel it calls as zeroth and its constant
+    as constant0 (derive/share.py): iterative_stance_zeroth_{geyer, held, gravity_type0,
+    gravity_type1, gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
 
-    Arguments, returns and status: those of the kernels, then the callees.
+    Arguments, returns and status: those of the kernels, then zeroth, constant0.
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
@@ -880,7 +880,7 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth):
     _a1 = carray(stack(19), 19)
     (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
         _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, 0.0, nodes,
+        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, nodes,
         iterations, tol,)
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
@@ -915,7 +915,7 @@ def iterative_stance_zeroth_geyer(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_geyer.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_geyer, 0.0.
 
     Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
     (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
@@ -959,7 +959,7 @@ def iterative_stance_zeroth_geyer(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_geyer)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_geyer, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -982,7 +982,7 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     (derive/share.py): iterative_apex_return_zeroth_{geyer, held, gravity_type0, gravity_type1,
     gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
 
-    Arguments, returns and status: those of the kernels, then the callees.
+    Arguments, returns and status: those of the kernels, then iterative_stance_zeroth.
     """
     # Total ops: 3
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
@@ -1126,64 +1126,12 @@ def iterative_stance_zeroth_held(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_held, 1.0.
+
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
-            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate (option zeroth)
-    _c0 = zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo)
-    if _c0[5] != STATUS_OK:
-        return fail(out, _c0[5])
-    z_b_q_r = _c0[0]
-    z_b_q_th = _c0[1]
-    z_b_q_thd = _c0[2]
-    z_lo_q_th = _c0[3]
-    z_lo_q_thd = _c0[4]
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, 1.0, nodes,
-        iterations, tol,)
-    _c1 = iterative_core(_a1)
-    if _c1[11] != STATUS_OK:
-        return fail(out, _c1[11])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    passes = _c1[10]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
-            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
-            & math.isfinite(liftoff_q_thd) & math.isfinite(passes)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
-        t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, passes,)
-    return STATUS_OK
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_held, 1.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1227,12 +1175,12 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type0.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type0, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type0)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type0, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1276,12 +1224,12 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type1.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type1, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type1)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type1, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1325,12 +1273,12 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type2.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type2, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type2)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type2, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1374,12 +1322,12 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type3.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type3, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type3)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type3, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1423,12 +1371,12 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type4.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type4, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type4)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type4, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1472,12 +1420,12 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type5.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type5, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type5)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type5, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1521,12 +1469,12 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_geyer_vs.
+    Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_geyer_vs, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_stance_zeroth_shared(x, p, out, zeroth_geyer_vs)
+    return iterative_stance_zeroth_shared(x, p, out, zeroth_geyer_vs, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

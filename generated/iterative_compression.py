@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:0664e28e25d833a6
+#   iterative.py sha256:ba12246f8afd7d9e
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -40,7 +40,7 @@ def iterative_compression_zeroth_shared(x, p, out, zeroth):
     iterative_compression_zeroth_{geyer, held, gravity_type0, gravity_type1, gravity_type2,
     gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
 
-    Arguments, returns and status: those of the kernels, then the callees.
+    Arguments, returns and status: those of the kernels, then zeroth.
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])

@@ -1899,17 +1899,18 @@ def iterative_core_jvp6_b60fdf(_a, out):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def iterative_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac):
+def iterative_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac, constant0):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    The body that 8 kernels share, each passing the kernel it calls as zeroth_jac
-    (derive/share.py): iterative_stance_jacobian_zeroth_{geyer, gravity_type0, gravity_type1,
-    gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
+    The body that 9 kernels share, each passing the kernel it calls as zeroth_jac and its
+    constant as constant0 (derive/share.py): iterative_stance_jacobian_zeroth_{geyer, held,
+    gravity_type0, gravity_type1, gravity_type2, gravity_type3, gravity_type4, gravity_type5,
+    geyer_vs}.
 
-    Arguments, returns and status: those of the kernels, then the callees.
+    Arguments, returns and status: those of the kernels, then zeroth_jac, constant0.
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
@@ -1940,10 +1941,10 @@ def iterative_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac):
         _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
         _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
         _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], 0.0, nodes, iterations, tol, _o0[5], _o0[11], _o0[17],
-        _o0[23], _o0[29], _o0[6], _o0[12], _o0[18], _o0[24], _o0[30], _o0[7], _o0[13], _o0[19], _o0[25],
-        _o0[31], _o0[8], _o0[14], _o0[20], _o0[26], _o0[32], _o0[9], _o0[15], _o0[21], _o0[27], _o0[33],
-        _o0[10], _o0[16], _o0[22], _o0[28], _o0[34],)
+        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], constant0, nodes, iterations, tol, _o0[5], _o0[11],
+        _o0[17], _o0[23], _o0[29], _o0[6], _o0[12], _o0[18], _o0[24], _o0[30], _o0[7], _o0[13], _o0[19],
+        _o0[25], _o0[31], _o0[8], _o0[14], _o0[20], _o0[26], _o0[32], _o0[9], _o0[15], _o0[21], _o0[27],
+        _o0[33], _o0[10], _o0[16], _o0[22], _o0[28], _o0[34],)
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
@@ -1975,7 +1976,7 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -1996,7 +1997,7 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2258,7 +2259,7 @@ def iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jac
     iterative_apex_return_jacobian_zeroth_{geyer, held, gravity_type0, gravity_type1,
     gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
 
-    Arguments, returns and status: those of the kernels, then the callees.
+    Arguments, returns and status: those of the kernels, then iterative_stance_jacobian_zeroth.
     """
     # Total ops: 1
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
@@ -2356,6 +2357,9 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
+    Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
+    zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0.
+
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
@@ -2374,60 +2378,8 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
-            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate (option zeroth)
-    _o0 = carray(stack(35), 35)
-    _c0 = (zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
-        k_c, k_d, g_s, q_r_lo, _o0))
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], 1.0, nodes, iterations, tol, _o0[5], _o0[11], _o0[17],
-        _o0[23], _o0[29], _o0[6], _o0[12], _o0[18], _o0[24], _o0[30], _o0[7], _o0[13], _o0[19], _o0[25],
-        _o0[31], _o0[8], _o0[14], _o0[20], _o0[26], _o0[32], _o0[9], _o0[15], _o0[21], _o0[27], _o0[33],
-        _o0[10], _o0[16], _o0[22], _o0[28], _o0[34],)
-    _o1 = carray(stack(77), 77)
-    _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
-    if _c1 != STATUS_OK:
-        return fail(out, _c1)
-    # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76],) = (_o1[0],
-        _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10], _o1[11], _o1[12],
-        _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21], _o1[22], _o1[23],
-        _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35], _o1[36], _o1[37],
-        _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46], 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60], _o1[61], _o1[62],
-        _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
-    if not finite(out):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    return STATUS_OK
+    return (iterative_stance_jacobian_zeroth_shared(x, p, out,
+        zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2487,7 +2439,7 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -2508,7 +2460,7 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2571,7 +2523,7 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -2592,7 +2544,7 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2655,7 +2607,7 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -2676,7 +2628,7 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2739,7 +2691,7 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -2760,7 +2712,7 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2823,7 +2775,7 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -2844,7 +2796,7 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2907,7 +2859,7 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -2928,7 +2880,7 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -2991,7 +2943,7 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d.
+    zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -3012,7 +2964,7 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
-        zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d))
+        zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0))
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

@@ -9,7 +9,7 @@
 #   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:af2637d59c8ab493
 #   geyer_vs.py sha256:989b828600db2cf3
-#   iterative.py sha256:0664e28e25d833a6
+#   iterative.py sha256:ba12246f8afd7d9e
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -342,7 +342,7 @@ def report_core(_a):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def iterative_report_stance_zeroth_shared(x, p, out, zeroth):
+def iterative_report_stance_zeroth_shared(x, p, out, zeroth, constant0):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
@@ -350,11 +350,11 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    The body that 8 kernels share, each passing the kernel it calls as zeroth (derive/share.py):
-    iterative_report_stance_zeroth_{geyer, gravity_type0, gravity_type1, gravity_type2,
-    gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
+    The body that 9 kernels share, each passing the kernel it calls as zeroth and its constant
+    as constant0 (derive/share.py): iterative_report_stance_zeroth_{geyer, held, gravity_type0,
+    gravity_type1, gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
 
-    Arguments, returns and status: those of the kernels, then the callees.
+    Arguments, returns and status: those of the kernels, then zeroth, constant0.
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
@@ -386,7 +386,7 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth):
     _a1 = carray(stack(19), 19)
     (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
         _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, 0.0, variant,
+        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, variant,
         iterations, bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
@@ -422,7 +422,7 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_geyer.
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_geyer, 0.0.
 
     (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
     liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
@@ -464,7 +464,7 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_geyer)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_geyer, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -489,7 +489,7 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     iterative_report_apex_return_zeroth_{geyer, held, gravity_type0, gravity_type1,
     gravity_type2, gravity_type3, gravity_type4, gravity_type5, geyer_vs}.
 
-    Arguments, returns and status: those of the kernels, then the callees.
+    Arguments, returns and status: those of the kernels, then iterative_report_stance_zeroth.
     """
     # Total ops: 3
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
@@ -634,63 +634,12 @@ def iterative_report_stance_zeroth_held(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_held, 1.0.
+
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations)
-            & math.isfinite(bottom_length) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
-            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
-            == 0.0) or (bottom_length == 1.0))):
-        return fail(out, STATUS_INVALID_INPUT)
-    # q_rd_td < 0
-    if not ((q_rd_td < 0.0)):
-        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # zeroth iterate (option zeroth)
-    _c0 = zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo)
-    if _c0[5] != STATUS_OK:
-        return fail(out, _c0[5])
-    z_b_q_r = _c0[0]
-    z_b_q_th = _c0[1]
-    z_b_q_thd = _c0[2]
-    z_lo_q_th = _c0[3]
-    z_lo_q_thd = _c0[4]
-    # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, 1.0, variant,
-        iterations, bottom_length,)
-    _c1 = report_core(_a1)
-    if _c1[10] != STATUS_OK:
-        return fail(out, _c1[10])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
-            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
-            & math.isfinite(liftoff_q_thd)):
-        return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
-    return STATUS_OK
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_held, 1.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -738,12 +687,12 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type0.
+    zeroth_gravity_type0, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type0)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type0, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -792,12 +741,12 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type1.
+    zeroth_gravity_type1, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type1)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type1, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -846,12 +795,12 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type2.
+    zeroth_gravity_type2, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type2)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type2, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -900,12 +849,12 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type3.
+    zeroth_gravity_type3, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type3)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type3, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -954,12 +903,12 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type4.
+    zeroth_gravity_type4, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type4)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type4, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1008,12 +957,12 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type5.
+    zeroth_gravity_type5, 0.0.
 
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type5)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type5, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1061,12 +1010,13 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_geyer_vs.
+    Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_geyer_vs,
+    0.0.
 
     Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 0
-    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_geyer_vs)
+    return iterative_report_stance_zeroth_shared(x, p, out, zeroth_geyer_vs, 0.0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

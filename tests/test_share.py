@@ -73,11 +73,14 @@ def test_kernels_differing_only_in_their_callee_share_one_body(tmp_path):
     c2, c3 = _callee("times_two", 2.0), _callee("times_three", 3.0)
     lowered = [lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3))]
     out = share_bodies(lowered)
-    assert [k["name"] for k in out] == ["times_two", "times_three", "step" + SUFFIX, "step_two", "step_three"]
-    body = out[2]
+    # the callees, u = 2 a and u = 3 a, differ in a constant: they share a body too
+    names = ["times" + SUFFIX, "times_two", "times_three", "step" + SUFFIX, "step_two", "step_three"]
+    assert [k["name"] for k in out] == names
+    body = out[3]
     assert body["shared_by"] == ["step_two", "step_three"] and body["shared_args"] == ["times"]
     assert body["params"] == "a, b, times" and body["inline"]
-    assert [k["passes"] for k in out[3:]] == [["times_two"], ["times_three"]]
+    assert [k["passes"] for k in out[4:]] == [["times_two"], ["times_three"]]
+    assert [k["passes"] for k in out[1:3]] == [["2.0"], ["3.0"]]
     mod, text = _load(tmp_path, out)
     assert 'inline="always"' in text.split("def step_shared")[0].rsplit("@njit", 1)[1]
     # the entry points compute what the kernels they replace computed
@@ -85,12 +88,35 @@ def test_kernels_differing_only_in_their_callee_share_one_body(tmp_path):
     assert mod.step_three(1.5, 2.0) == (1.5 * 3.0 * 2.0 + 1.0, 0)
 
 
-def test_a_kernel_differing_in_more_than_its_callees_keeps_its_body():
+def test_kernels_differing_in_a_constant_pass_it_to_the_shared_body(tmp_path):
+    """The iterative maps' ``held`` zeroth iterate passes its flag as 1, the other choices as 0: a
+    float constant in which kernels differ is an argument of their shared body."""
     c2, c3 = _callee("times_two", 2.0), _callee("times_three", 3.0)
-    lowered = [lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3, offset=2.0))]
+    lowered = [lower(k) for k in (c2, c3, _caller("step_two", c2), _caller("step_three", c3, offset=2.5))]
     out = share_bodies(lowered)
-    assert [k["name"] for k in out] == [k["name"] for k in lowered]
-    assert not any(k["shared_by"] or k["entry_of"] for k in out)
+    body = out[3]
+    assert body["name"] == "step" + SUFFIX and body["params"] == "a, b, times, constant0"
+    assert [k["passes"] for k in out[4:]] == [["times_two", "1.0"], ["times_three", "2.5"]]
+    mod, text = _load(tmp_path, out)
+    assert "each passing the kernel it calls as times and its constant as constant0" in " ".join(text.split())
+    assert mod.step_two(1.5, 2.0) == (1.5 * 2.0 * 2.0 + 1.0, 0)
+    assert mod.step_three(1.5, 2.0) == (1.5 * 3.0 * 2.0 + 2.5, 0)
+
+
+def test_a_kernel_differing_in_more_than_callees_and_constants_keeps_its_body(monkeypatch):
+    from slipmaps.derive import share
+
+    c2, c3 = _callee("times_two", 2.0), _callee("times_three", 3.0)
+    other = replace(
+        _caller("step_three", c3), steps=(Call(c3, {"a": a}, {"u": "u"}), Stage(((v, u * b * b),)))
+    )
+    for pair in ((_caller("step_two", c2), other), (_caller("step_two", c2), _caller("step_three", c3, 2.5))):
+        if pair[1] is not other:  # kernels differing in more constants than an argument list may take
+            monkeypatch.setattr(share, "MAX_CONSTANTS", 0)
+        lowered = [lower(k) for k in (c2, c3, *pair)]
+        steps = [k for k in share_bodies(lowered) if k["name"].startswith("step")]
+        assert [k["name"] for k in steps] == ["step_two", "step_three"]
+        assert not any(k["shared_by"] or k["entry_of"] for k in steps)
 
 
 def test_a_callee_numba_inlines_is_inlined_through_the_argument(tmp_path):
@@ -136,7 +162,7 @@ def _shared_bodies() -> list[tuple[str, str, list[str]]]:
 def test_generated_shared_bodies_are_inlined_into_declared_entry_points():
     """Every shared body is inlined (a function argument of a compiled, not inlined, function is an
     address numba's cache refuses) and serves two or more declared kernels, each a docstring and one
-    return statement. The iterative maps' kernels of every zeroth-iterate choice but ``held`` share
+    return statement. The iterative maps' kernels of every zeroth-iterate choice share
     their stance's and their apex return's bodies, and their Jacobians'."""
     bodies = _shared_bodies()
     assert bodies, "no shared body generated"
@@ -157,7 +183,7 @@ def test_generated_shared_bodies_are_inlined_into_declared_entry_points():
             assert (module, f"{map_}_{role}_zeroth{SUFFIX}") in names, (module, role)
     entries = {e for _, _, es in bodies for e in es}
     assert "iterative_stance_zeroth_gravity_type0" in entries
-    assert "iterative_stance_zeroth_held" not in entries  # its flag `held` is a constant of its body
+    assert "iterative_stance_zeroth_held" in entries  # its flag `held` passed as a constant
 
 
 def test_entry_points_load_from_numbas_cache(tmp_path):
