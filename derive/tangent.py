@@ -29,11 +29,12 @@ direction). Symbolic forward mode over the declaration, step by step:
 - :class:`~.ir.Iterate`: the tangents of the state variables are carried through every pass,
   outside the convergence test: the derivative of the iterate the loop stops at, which is what the
   map returns (derivatives through the iterations). What the loop evaluates at every iterate
-  (:attr:`~.ir.Iterate.evaluate`) keeps its tangents after it. Where the loop's steps are stages
-  and calls, at least :data:`LOOPED_SIZE` assignments a pass (the iterations of Schwind and
-  Koditschek's halves at 3 or more nodes, gravity-type5's), each pass computes its values and
-  partial derivatives once and then runs its tangent code, written once, per direction
-  (:class:`~.ir.Directions`, on the rows of a direction array ``_T[row, direction]``), and so do the
+  (:attr:`~.ir.Iterate.evaluate`) keeps its tangents after it. Where the loop's steps are stages,
+  calls and switches of them, at least :data:`LOOPED_SIZE` assignments a pass (the gravity maps'
+  fixed points), each pass computes its values and partial derivatives once and then runs its
+  tangent code, written once, per direction (:class:`~.ir.Directions`, on the rows of a direction
+  array ``_T[row, direction]`` on the kernel's stack; a switch's tangent code in a switch on the
+  same option, whose branch reads the partial derivatives its values' branch named), and so do the
   initial values and the stages and calls right after the loop; otherwise every tangent has a
   variable per direction, carried through the passes (:attr:`~.ir.Iterate.carry`). A direction
   that reaches neither the initial values nor anything the loop reads is zero in it.
@@ -479,11 +480,13 @@ _J = "j"
 
 
 #: A loop with at least this many assignments per pass (its steps' assignments and bindings, a
-#: switch's largest branch, its updates) gets its tangent code written once and run per direction;
-#: a smaller one one variable per tangent and direction (the direction array, its stores and loads
-#: cost about 100 ns a call, which a small loop does not win back: measured 2026-12-01, the gravity
-#: maps' loops of 21-23 assignments 1.55x -> 1.8x their map per direction, geyer-vs's (a switch
-#: per pass, none by default) 2.1x -> 2.9x: so a loop holding a switch is not run per direction).
+#: switch's largest branch, its updates) gets its tangent code written once and run per direction
+#: (unless it declares ``per_direction=False``); a smaller one one variable per tangent and
+#: direction. Measured 2026-12-05 (benchmarks/bench_versions.py, 2-core machine, load 1.1) against
+#: the same loops unrolled: the gravity maps' loops of 21-23 assignments per direction, with the
+#: direction array on the stack, 0.92-0.98x the Jacobian batch's time and 340 fewer generated
+#: lines; geyer-vs's loop (no pass by default) 1.07-1.12x (one thread): it declares
+#: ``per_direction=False``.
 LOOPED_SIZE = 20
 
 
