@@ -19,6 +19,7 @@ from __future__ import annotations
 import difflib
 import hashlib
 import json
+import re
 from pathlib import Path
 
 import jinja2
@@ -182,10 +183,16 @@ def modules() -> tuple[Module, ...]:
     return tuple(done)
 
 
+_FUNC_REF = re.compile(r":func:`[\w.]+`")
+
+
 def _doc_key(k: dict) -> tuple:
     """What a kernel's docstrings say besides its equations: summary, notes, arguments, returns,
-    status and batch form (derive/templates/kernels.py.j2)."""
-    return (k["summary"], k["notes"], repr(k["args"]), k["doc_args"], repr(k["returns"]), k["status"]) + (
+    status and batch form (derive/templates/kernels.py.j2). A derivative kernel's reference to the
+    kernel it differentiates counts as the same: its arguments (in the key) are that kernel's."""
+    doc_args = _FUNC_REF.sub(":func:", k["doc_args"])
+    returns = _FUNC_REF.sub(":func:", repr(k["returns"]))
+    return (k["summary"], k["notes"], repr(k["args"]), doc_args, returns, k["status"]) + (
         k["n_out"],
         repr(k["layout"]),
         k["out_array"],

@@ -277,17 +277,8 @@ def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_gravity_type0`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_gravity_type0`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
     """
     # Total ops: 0
     # stance: Gravity correction type 0 (leg length l0)
@@ -317,17 +308,8 @@ def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_gravity_type1`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_gravity_type1`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
     """
     # Total ops: 0
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
@@ -357,17 +339,8 @@ def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_gravity_type2`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_gravity_type2`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
     """
     # Total ops: 0
     # stance: Gravity correction type 2 (average leg length)
@@ -397,17 +370,8 @@ def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_gravity_type3`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_gravity_type3`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
     """
     # Total ops: 0
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
@@ -437,17 +401,8 @@ def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_gravity_type4`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_gravity_type4`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
     """
     # Total ops: 0
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
@@ -477,17 +432,8 @@ def zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_gravity_type5`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_gravity_type5`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
     """
     # Total ops: 0
     # stance: Gravity correction type 5 (time-varying momentum)
@@ -517,17 +463,8 @@ def zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_geyer_vs`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_geyer_vs`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
     """
     # Total ops: 0
     # stance: Simple variable-stiffness map (Geyer et al. per half)
@@ -2360,22 +2297,7 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_held`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_held`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2401,22 +2323,7 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_held.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_held`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_held`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_held)
@@ -2441,22 +2348,7 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type0`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type0`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2483,22 +2375,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type0`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type0`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2525,22 +2402,7 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type1`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type1`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2567,22 +2429,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type1.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type1`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type1`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2609,22 +2456,7 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type2`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type2`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2651,22 +2483,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type2.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type2`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type2`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2693,22 +2510,7 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type3`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type3`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2735,22 +2537,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type3.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type3`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type3`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2777,22 +2564,7 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type4`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type4`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2819,22 +2591,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type4.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type4`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type4`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2861,22 +2618,7 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_gravity_type5`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_gravity_type5`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2903,22 +2645,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_gravity_type5.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_gravity_type5`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_gravity_type5`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2945,22 +2672,7 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
     zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_stance_zeroth_geyer_vs`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_stance_zeroth_geyer_vs`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2986,22 +2698,7 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
     iterative_stance_jacobian_zeroth_geyer_vs.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative.iterative_apex_return_zeroth_geyer_vs`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.iterative_apex_return_zeroth_geyer_vs`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_geyer_vs)

@@ -9,7 +9,7 @@
 #   support.py sha256:cd017e56afa49b84
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   iterative_jacobian.py sha256:03c1049579be5210
+#   iterative_jacobian.py sha256:4026ca67e73d03d9
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -1421,22 +1421,7 @@ def iterative_report_stance_jacobian_zeroth_held(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_held`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_held`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1464,23 +1449,7 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_held.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_held`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_held`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1509,24 +1478,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type0`, in its
-    order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type0`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1555,24 +1507,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type0`, in
-    its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type0`,
-            in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1601,24 +1536,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type1`, in its
-    order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type1`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1647,24 +1565,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type1.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type1`, in
-    its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type1`,
-            in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1693,24 +1594,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type2`, in its
-    order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type2`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1739,24 +1623,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type2.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type2`, in
-    its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type2`,
-            in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1785,24 +1652,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type3`, in its
-    order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type3`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1831,24 +1681,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type3.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type3`, in
-    its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type3`,
-            in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1877,24 +1710,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type4`, in its
-    order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type4`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1923,24 +1739,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type4.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type4`, in
-    its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type4`,
-            in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1969,24 +1768,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type5`, in its
-    order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_gravity_type5`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -2015,24 +1797,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_gravity_type5.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type5`, in
-    its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_gravity_type5`,
-            in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2061,23 +1826,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
     zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_stance_zeroth_geyer_vs`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_stance_zeroth_geyer_vs`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -2106,24 +1855,7 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
     iterative_report_stance_jacobian_zeroth_geyer_vs.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length); writes the outputs
-    below into out, in order, and returns
-    the status (out all NaN unless OK).
-
-    Arguments: those of :func:`iterative_report.iterative_report_apex_return_zeroth_geyer_vs`, in its
-    order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative_report.iterative_report_apex_return_zeroth_geyer_vs`, in its
-            order
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, retraction_rate, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
