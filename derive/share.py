@@ -39,6 +39,9 @@ _FLOAT = re.compile(r"(?<![\w.])\d+\.\d+(?:e[+-]?\d+)?(?![\w.])")
 #: The most constants in which the kernels of one shared body may differ (each an argument).
 MAX_CONSTANTS = 4
 
+#: The fields of a lowered code node that are prose (a comment's text, a guard's note), not code.
+_PROSE = ("text", "doc")
+
 #: The name suffix of every shared body (tests tell them from the declared kernels by it).
 SUFFIX = "_shared"
 
@@ -68,7 +71,7 @@ def _literals(value, fn, seen: list):
     if isinstance(value, list):
         return [_literals(v, fn, seen) for v in value]
     if isinstance(value, dict):
-        return {f: v if f in ("text", "doc") else _literals(v, fn, seen) for f, v in sorted(value.items())}
+        return {f: v if f in _PROSE else _literals(v, fn, seen) for f, v in sorted(value.items())}
     return value
 
 
@@ -116,7 +119,7 @@ def _words(value) -> set[str]:
     if isinstance(value, list):
         return set().union(*(_words(v) for v in value))
     if isinstance(value, dict):
-        return set().union(*(_words(v) for f, v in value.items() if f not in ("text", "doc")))
+        return set().union(*(_words(v) for f, v in value.items() if f not in _PROSE))
     return set()
 
 
@@ -147,8 +150,8 @@ def share_bodies(kernels: list[dict]) -> list[dict]:
     """``kernels`` (one module's, lowered) with every group of two or more that differ only in their
     callees and in at most :data:`MAX_CONSTANTS` float constants (the iterative maps' ``held`` zeroth
     iterate passes a flag the other choices pass as 0) rendered as one shared body and an entry
-    point per kernel. A callee numba inlines
-    (``inline="always"``: the iterative maps' zeroth iterates) is inlined through the argument too.
+    point per kernel. A callee numba inlines (``inline="always"``: the iterative maps' zeroth
+    iterates) is inlined through the argument too.
     Deterministic: groups, names and arguments follow the kernels' order."""
     taken = {k["name"] for k in kernels}
     for k in kernels:
@@ -198,7 +201,12 @@ def share_bodies(kernels: list[dict]) -> list[dict]:
                 part
                 for part in (
                     ("the kernel it calls as " + ", ".join(arguments[: len(callees)])) if callees else "",
-                    ("its constant as " + ", ".join(arguments[len(callees) :])) if constants else "",
+                    (
+                        ("its constants as " if len(constants) > 1 else "its constant as ")
+                        + ", ".join(arguments[len(callees) :])
+                    )
+                    if constants
+                    else "",
                 )
                 if part
             ),
