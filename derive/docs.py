@@ -89,6 +89,14 @@ def _per_choice(row: dict) -> list[str]:
     ]
 
 
+def _fixed(row: dict) -> list[str]:
+    """A family member's line: the kernels it shares and the arguments it fixes in ``p``."""
+    if not row["fixed"]:
+        return []
+    fixed = ", ".join(f"`{name}` = {code:g}" for name, code in row["fixed"].items())
+    return [f"- kernels of the family `{row['module']}`, with {fixed} in `p` (not options of this map)"]
+
+
 def maps_page(index: dict) -> str:
     """docs/maps.md: every map with its equations, parameters, options, outputs and kernels."""
     out = [
@@ -123,6 +131,7 @@ def maps_page(index: dict) -> str:
             f"- parameter record `p`: {', '.join(f'`{a}`' for a in kernels['stance']['p'])}",
             f"- requires: {', '.join(row['requires']) or 'nothing'}",
             *_per_choice(row),
+            *_fixed(row),
             f"- generated module `slipmaps.generated.{row['module']}`: "
             + ", ".join(f"`{k['name']}`" for role, k in kernels.items() if not role.endswith("_jacobian")),
         ]

@@ -121,13 +121,23 @@ def _render_numerics(name: str, files: dict[str, str]) -> None:
     )
 
 
+def kernel_owners() -> tuple[MapSpec, ...]:
+    """The declarations whose kernels are generated: every map's owner (its family, else itself:
+    :attr:`.MapSpec.owner`), once each, in report order (a family at its first member), then the
+    exact map."""
+    owners: dict[str, MapSpec] = {}
+    for spec in (*all_maps(), ground_truth()):
+        owners.setdefault(spec.owner.name, spec.owner)
+    return tuple(owners.values())
+
+
 def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]:
     """The Jacobian kernels of every map (:meth:`MapSpec.jacobian_kernels`) and of the kernels they
     call, one module ``<module>_jacobian`` per module of the differentiated kernels."""
     widen: dict = {}
     for _ in range(2):  # the second pass with one vector JVP per callee for all its callers' patterns
         diff = Differentiator(widen=widen)
-        for spec in (*all_maps(), ground_truth()):
+        for spec in kernel_owners():
             spec.jacobian_kernels(diff, flights)
         diff.build()
         widen = widened(diff.asked)
@@ -154,7 +164,7 @@ def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]
 
 def _primal(flights) -> tuple[tuple[Module, ...], tuple[Module, ...]]:
     """The maps' modules (in report order, the exact map last) and the halves'."""
-    maps = tuple(spec.module(flights) for spec in (*all_maps(), ground_truth()))
+    maps = tuple(spec.module(flights) for spec in kernel_owners())
     return maps, tuple(half.module() for half in all_halves())
 
 

@@ -71,9 +71,18 @@ class MapSpec(Declaration):
     #: The map reproduces the report's printed formulas, errors included, to measure them: it makes
     #: no accuracy claim (the tests over every map check its contract, not its accuracy).
     as_printed: bool = False
+    #: The declaration whose kernels this map runs (None: its own). A family declares the common
+    #: body once, its rule chosen by an option (the gravity corrections' impulse rule, types 0-4);
+    #: each member is a map of its own (name, title, equations, public options and their defaults)
+    #: that fixes the family's other options to the values ``fixed`` gives (by name; not the user's
+    #: to choose: the index row's ``fixed``, which the runtime passes with the options).
+    family: MapSpec | None = None
+    fixed: tuple[tuple[str, object], ...] = ()
 
     def __post_init__(self):
         super().__post_init__()
+        if self.family is not None:
+            self._check_member()
         unknown = [s for s in self.approximation_statuses if s not in STATUS]
         if unknown:
             raise ValueError(f"map {self.name}: unknown status(es) {unknown}")
@@ -81,6 +90,46 @@ class MapSpec(Declaration):
             raise ValueError(
                 f"map {self.name}: a map with the single stiffness k requires constant_stiffness"
             )
+
+    def _check_member(self) -> None:
+        """A member's options are the family's (same kinds and choices; defaults of its own) but for
+        those it fixes, each to a valid value; neither has specialized options."""
+        family = {o.name: o for o in self.family.options}
+        fixed = dict(self.fixed)
+        if self.family.family is not None or self.specialized() or self.family.specialized():
+            raise ValueError(f"map {self.name}: a family has one level and no specialized options")
+        for o in self.options:
+            f = family.get(o.name)
+            if f is None or (f.kind, f.values, f.low, f.high) != (o.kind, o.values, o.low, o.high):
+                raise ValueError(f"map {self.name}: option {o.name} is not the family's {self.family.name}")
+        missing = set(family) - set(fixed) - {o.name for o in self.options}
+        extra = set(fixed) - set(family) | set(fixed) & {o.name for o in self.options}
+        if missing or extra:
+            raise ValueError(
+                f"map {self.name}: fixes {sorted(extra)} it may not, leaves {sorted(missing)} unset"
+            )
+        for name, value in self.fixed:
+            self._code(family[name], value)
+        if (self.params, self.requires) != (self.family.params, self.family.requires):
+            raise ValueError(f"map {self.name}: parameters and requirements are the family's")
+
+    @staticmethod
+    def _code(option: Option, value) -> float:
+        """The kernel argument of ``option``'s ``value``; ValueError outside its domain."""
+        code = option.code(value) if option.choices else value
+        if option.choices or option.domain().subs(option.symbol, code) is sp.true:
+            return float(code)
+        raise ValueError(f"option {option.name}: {value!r} is outside its domain")
+
+    @property
+    def owner(self) -> MapSpec:
+        """The declaration whose kernels this map runs: its family, else itself."""
+        return self.family or self
+
+    def fixed_codes(self) -> dict[str, float]:
+        """The kernel arguments of the family's options this member fixes, by name."""
+        family = {o.name: o for o in self.owner.options}
+        return {name: self._code(family[name], value) for name, value in self.fixed}
 
     def kernel_name(self, role: str) -> str:
         """The generated function of ``role`` ("stance", "state_at", "apex_return")."""
@@ -151,8 +200,9 @@ class MapSpec(Declaration):
             **{a.name: x for a, x in zip(catalog.TOUCHDOWN, touchdown, strict=True)},
             **{p: params[p] for p in self.params + ("q_r_lo",)},
             **{o.name: sp.Float(o.default_code) for o in self.options if o.kernel},
+            **{name: sp.Float(code) for name, code in self.fixed_codes().items()},
         }
-        return Call(self.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
+        return Call(self.owner.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
 
     def state_at_kernel(self, choice: dict | None = None) -> Kernel | None:
         if self.built().state_at is None:
@@ -314,28 +364,34 @@ class MapSpec(Declaration):
     # -- index ---------------------------------------------------------------------------------
     def index_row(self, flight_kernels: Mapping[str, Kernel]) -> dict:
         """The map's row of the generated index: what ``slipmaps maps`` lists, and every kernel's
-        calling convention by role (:meth:`~.ir.Kernel.signature`), which the runtime fills by name."""
-        stance, state_at = self._stance_kernel(), self.state_at_kernel({})
-        apex = self.apex_return_kernel(flight_kernels, {})
-        jac_module = f"{self.ident}_jacobian"
-        kernels = {"stance": self.signature(stance), "apex_return": self.signature(apex)}
+        calling convention by role (:meth:`~.ir.Kernel.signature`), which the runtime fills by name.
+        A family member's kernels are its family's, and its row says which options it ``fixed``."""
+        owner = self.owner
+        stance, state_at = owner._stance_kernel(), owner.state_at_kernel({})
+        apex = owner.apex_return_kernel(flight_kernels, {})
+        jac_module = f"{owner.ident}_jacobian"
+        kernels = {"stance": owner.signature(stance), "apex_return": owner.signature(apex)}
         if state_at is not None:
-            kernels["state_at"] = self.signature(state_at)
+            kernels["state_at"] = owner.signature(state_at)
         for role, primal, wrt in (
-            ("stance", stance, self.stance_wrt()),
-            ("apex_return", apex, self.apex_wrt()),
+            ("stance", stance, owner.stance_wrt()),
+            ("apex_return", apex, owner.apex_wrt()),
         ):
-            sig = self.signature(primal)
+            sig = owner.signature(primal)
             kernels[f"{role}_jacobian"] = {
                 **sig,
                 "wrt": list(wrt),
                 "module": jac_module,
-                "name": sig["name"].replace(primal.name, self.kernel_name(f"{role}_jacobian"), 1),
-                **({"base": self.kernel_name(f"{role}_jacobian")} if "base" in sig else {}),
+                "name": sig["name"].replace(primal.name, owner.kernel_name(f"{role}_jacobian"), 1),
+                **({"base": owner.kernel_name(f"{role}_jacobian")} if "base" in sig else {}),
             }
-        return self.row(
-            requires=list(self.requires),
-            as_printed=self.as_printed,
-            approximation_statuses=list(self.approximation_statuses),
-            kernels=kernels,
-        )
+        return {
+            **self.row(
+                requires=list(self.requires),
+                as_printed=self.as_printed,
+                approximation_statuses=list(self.approximation_statuses),
+                kernels=kernels,
+                fixed=self.fixed_codes(),
+            ),
+            "module": owner.ident,
+        }

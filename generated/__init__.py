@@ -14,16 +14,8 @@ Modules:
     flight: Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2).
     geyer: Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
         kernels.
-    gravity_type0: Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and
-        apex-return kernels.
-    gravity_type1: Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance,
-        state-at-time and apex-return kernels.
-    gravity_type2: Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time
-        and apex-return kernels.
-    gravity_type3: Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance,
-        state-at-time and apex-return kernels.
-    gravity_type4: Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance,
-        state-at-time and apex-return kernels.
+    gravity: Gravity corrections types 0-4 (report section 4.1-4.5): stance, state-at-time and apex-return
+        kernels.
     gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance,
         state-at-time and apex-return kernels.
     geyer_vs: Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance,
@@ -40,16 +32,8 @@ Modules:
         and for a map its stance and apex-return Jacobians.
     geyer_vs_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP
         kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type0_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
-        gravity_type0: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type1_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
-        gravity_type1: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type2_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
-        gravity_type2: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type3_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
-        gravity_type3: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type4_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
-        gravity_type4: JVP kernels, and for a map its stance and apex-return Jacobians.
+    gravity_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity: JVP
+        kernels, and for a map its stance and apex-return Jacobians.
     gravity_type5_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
         gravity_type5: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP

@@ -10,11 +10,7 @@
 #   flight.py sha256:af2637d59c8ab493
 #   geyer.py sha256:f781cbbce76a77c5
 #   geyer_vs.py sha256:989b828600db2cf3
-#   gravity_type0.py sha256:23b6f141295981a6
-#   gravity_type1.py sha256:9cf93325fa1a194c
-#   gravity_type2.py sha256:32f348b7c9e1aebd
-#   gravity_type3.py sha256:2679f6fbce058dbd
-#   gravity_type4.py sha256:7a3cb668ff8f8557
+#   gravity.py sha256:4edb52ddd8446772
 #   gravity_type5.py sha256:2521abfe9185b31a
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
@@ -29,11 +25,7 @@ from .support import fail, finite, into_rows, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
 from .geyer_vs import geyer_vs_stance
-from .gravity_type0 import gravity_type0_stance
-from .gravity_type1 import gravity_type1_stance
-from .gravity_type2 import gravity_type2_stance
-from .gravity_type3 import gravity_type3_stance
-from .gravity_type4 import gravity_type4_stance
+from .gravity import gravity_stance
 from .gravity_type5 import gravity_type5_stance
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -694,11 +686,11 @@ def zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 0.0, 1.0, 0.0,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_type0_stance(_x0, _p0, _o0)
+    _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -716,11 +708,11 @@ def zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 1.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_type1_stance(_x0, _p0, _o0)
+    _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -738,11 +730,11 @@ def zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 2 (average leg length)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 2.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_type2_stance(_x0, _p0, _o0)
+    _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -760,11 +752,11 @@ def zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 3.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_type3_stance(_x0, _p0, _o0)
+    _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -782,11 +774,11 @@ def zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 4.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_type4_stance(_x0, _p0, _o0)
+    _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)

@@ -10,11 +10,7 @@
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_jacobian.py sha256:439802d2318bb4fa
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   gravity_type0_jacobian.py sha256:b4a8355ed96b48ca
-#   gravity_type1_jacobian.py sha256:a4efb6b00f19629b
-#   gravity_type2_jacobian.py sha256:e2ef306eb9622084
-#   gravity_type3_jacobian.py sha256:6d46a7edfbce4732
-#   gravity_type4_jacobian.py sha256:78dd3a0a93335be1
+#   gravity_jacobian.py sha256:c9554012357ab4cd
 #   gravity_type5_jacobian.py sha256:cd2fbda68786b927
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
@@ -30,11 +26,7 @@ from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_g
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian
 from .geyer_vs_jacobian import geyer_vs_stance_jacobian
-from .gravity_type0_jacobian import gravity_type0_stance_jacobian
-from .gravity_type1_jacobian import gravity_type1_stance_jacobian
-from .gravity_type2_jacobian import gravity_type2_stance_jacobian
-from .gravity_type3_jacobian import gravity_type3_stance_jacobian
-from .gravity_type4_jacobian import gravity_type4_stance_jacobian
+from .gravity_jacobian import gravity_stance_jacobian
 from .gravity_type5_jacobian import gravity_type5_stance_jacobian
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -284,11 +276,11 @@ def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     # stance: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 0.0, 1.0, 0.0,)
     _o0 = carray(stack(72), 72)
-    _c0 = gravity_type0_stance_jacobian(_x0, _p0, _o0)
+    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # (internal helper: its callers check that their outputs are finite)
@@ -315,11 +307,11 @@ def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 1.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
-    _c0 = gravity_type1_stance_jacobian(_x0, _p0, _o0)
+    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # (internal helper: its callers check that their outputs are finite)
@@ -346,11 +338,11 @@ def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     # stance: Gravity correction type 2 (average leg length)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 2.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
-    _c0 = gravity_type2_stance_jacobian(_x0, _p0, _o0)
+    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # (internal helper: its callers check that their outputs are finite)
@@ -377,11 +369,11 @@ def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(11), 11)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
-        g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 3.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
-    _c0 = gravity_type3_stance_jacobian(_x0, _p0, _o0)
+    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # (internal helper: its callers check that their outputs are finite)
@@ -408,11 +400,11 @@ def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12,)
+    _p0 = carray(stack(14), 14)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 4.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
-    _c0 = gravity_type4_stance_jacobian(_x0, _p0, _o0)
+    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # (internal helper: its callers check that their outputs are finite)

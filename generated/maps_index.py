@@ -84,15 +84,16 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
     'q_r_td', 'q_r_lo'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}}, {
-    'name': 'iterative-report', 'title': 'Iterative stance map (Schwind and Koditschek, as printed)',
-    'section': '3.2', 'equations': ['27', '29', '30', '31', '32', '33', '35', '37', '38', '39', '40', '41',
-    '42', '43', '44', '45', '98', '114', '115', '116', '117', '118', '119', '120', '121', '122', '123', '124',
-    '125', '126', '128', '129', '130', '131', '132', '133', '134', '135', '137', '138', '139', '140', '141',
-    '143', '144', '145', '146', '147', '148', '149', '150', '154'], 'params': ['m', 'l0', 'k_c', 'k_d',
-    'g_s'], 'options': [{'name': 'variant', 'kind': 'choice', 'default': 'integrand', 'doc':
-    'which mean-value form each step uses', 'choices': [{'value': 'integrand', 'doc':
-    'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, {'value': 'factor', 'doc':
+    'touchdown_q_th'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}},
+    'fixed': {}}, {'name': 'iterative-report', 'title':
+    'Iterative stance map (Schwind and Koditschek, as printed)', 'section': '3.2', 'equations': ['27', '29',
+    '30', '31', '32', '33', '35', '37', '38', '39', '40', '41', '42', '43', '44', '45', '98', '114', '115',
+    '116', '117', '118', '119', '120', '121', '122', '123', '124', '125', '126', '128', '129', '130', '131',
+    '132', '133', '134', '135', '137', '138', '139', '140', '141', '143', '144', '145', '146', '147', '148',
+    '149', '150', '154'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'variant', 'kind':
+    'choice', 'default': 'integrand', 'doc': 'which mean-value form each step uses', 'choices': [{'value':
+    'integrand', 'doc': 'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, {'value':
+    'factor', 'doc':
     'only 1/H^{-1} at the point, the weights 1/sigma^2 and sigma integrated exactly: (133)-(135), '
     '(148)-(150), with (134)/(149) keeping p_th' }], 'low': None, 'high': None, 'at_rest_length': [],
     'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants',
@@ -150,11 +151,11 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'], 'out': ['apex_height', 'apex_speed',
     't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd',
     'step_length', 'foot_x', 'foot_y', 'touchdown_q_th'], 'base': 'iterative_report_apex_return_jacobian',
-    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}}, {'name':
-    'gravity-type0', 'title': 'Gravity correction type 0 (leg length l0)', 'section': '4.1', 'equations': [
-    '46', '47', '48', '49', '50', '51'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading',
-    'kind': 'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{
-    'value': 'mean', 'doc':
+    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}, {
+    'name': 'gravity-type0', 'title': 'Gravity correction type 0 (leg length l0)', 'section': '4.1',
+    'equations': ['46', '47', '48', '49', '50', '51'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name':
+    'reading', 'kind': 'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)",
+    'choices': [{'value': 'mean', 'doc':
     'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
     'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
     "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
@@ -168,34 +169,35 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
     'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity_type0', 'summary':
+    'tolerance']}], 'module': 'gravity', 'summary':
     'P_c from the torque at l0 sampled at touchdown and liftoff (49) or also the bottom (51)', 'roles': [
     'yu-target'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
     'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity_type0',
-    'name': 'gravity_type0_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type0', 'name':
-    'gravity_type0_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
-    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']},
-    'state_at': {'module': 'gravity_type0', 'name': 'gravity_type0_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
-    'gravity_type0_jacobian', 'name': 'gravity_type0_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations',
-    'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type0_jacobian',
-    'name': 'gravity_type0_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
+    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate', 'k']}}}, {'name': 'gravity-type1', 'title':
+    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
+    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
+    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
+    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
+    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
+    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 0.0,
+    'leg_length': 0.0, 'interval': 1.0}}, {'name': 'gravity-type1', 'title':
     'Gravity correction type 1 (leg length (l0 + q_r_b)/2)', 'section': '4.2', 'equations': ['46', '47', '48',
     '50', '52', '53', '54'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading', 'kind':
     'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value':
@@ -213,34 +215,35 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
     'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity_type1', 'summary':
+    'tolerance']}], 'module': 'gravity', 'summary':
     'P_c from the torque at the mean of the rest and bottom leg lengths (52), (54)', 'roles': ['yu-target'],
     'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
     'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity_type1',
-    'name': 'gravity_type1_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type1', 'name':
-    'gravity_type1_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
-    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']},
-    'state_at': {'module': 'gravity_type1', 'name': 'gravity_type1_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
-    'gravity_type1_jacobian', 'name': 'gravity_type1_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'iterations',
-    'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type1_jacobian',
-    'name': 'gravity_type1_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
+    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate', 'k']}}}, {'name': 'gravity-type2', 'title':
+    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
+    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
+    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
+    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
+    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
+    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 1.0,
+    'leg_length': 0.0, 'interval': 1.0}}, {'name': 'gravity-type2', 'title':
     'Gravity correction type 2 (average leg length)', 'section': '4.3', 'equations': ['46', '47', '48', '50',
     '55', '56', '57', '58', '59', '60', '61', '62', '63', '64'], 'params': ['m', 'l0', 'k', 'g_s'], 'options':
     [{'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc':
@@ -264,35 +267,35 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
     'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity_type2', 'summary':
+    'tolerance']}], 'module': 'gravity', 'summary':
     'P_c from the torque at the stance-average leg length (62), (64)', 'roles': ['yu-target',
     'accuracy-figure'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
     'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity_type2',
-    'name': 'gravity_type2_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'iterations', 'tol'], 'out': [
+    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module':
-    'gravity_type2', 'name': 'gravity_type2_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
-    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity_type2', 'name':
-    'gravity_type2_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'iterations', 'tol'], 'out': ['q_r',
-    'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type2_jacobian', 'name':
-    'gravity_type2_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type2_jacobian', 'name':
-    'gravity_type2_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
-    'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
-    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate', 'k']}}}, {'name': 'gravity-type3', 'title':
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
+    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
+    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
+    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
+    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
+    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
+    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 2.0,
+    'interval': 1.0}}, {'name': 'gravity-type3', 'title':
     'Gravity correction type 3 (trapezoid on [t_i, t_f])', 'section': '4.4', 'equations': ['46', '47', '48',
     '50', '65', '66'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading', 'kind': 'choice',
     'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value': 'mean', 'doc':
@@ -311,34 +314,35 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
     'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity_type3', 'summary':
+    'tolerance']}], 'module': 'gravity', 'summary':
     'P_c by the trapezoid rule on the torque with the true leg lengths (65), whole stance or halves', 'roles':
     ['yu-target'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
     'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity_type3',
-    'name': 'gravity_type3_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type3', 'name':
-    'gravity_type3_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
-    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']},
-    'state_at': {'module': 'gravity_type3', 'name': 'gravity_type3_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
-    'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
-    'gravity_type3_jacobian', 'name': 'gravity_type3_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'iterations',
-    'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type3_jacobian',
-    'name': 'gravity_type3_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
-    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
+    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate', 'k']}}}, {'name': 'gravity-type4', 'title':
+    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
+    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
+    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
+    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
+    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
+    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 3.0,
+    'samples': 2.0, 'leg_length': 0.0}}, {'name': 'gravity-type4', 'title':
     'Gravity correction type 4 (average leg length on [t_i, t_f])', 'section': '4.5', 'equations': ['46',
     '47', '48', '50', '67', '68', '69', '70', '71', '72', '73', '74', '75', '76', '77'], 'params': ['m', 'l0',
     'k', 'g_s'], 'options': [{'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc':
@@ -364,43 +368,42 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
     'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity_type4', 'summary':
+    'tolerance']}], 'module': 'gravity', 'summary':
     'P_c from the torque at the average leg length of each interval (76), whole stance or halves', 'roles': [
     'yu-target'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
     'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity_type4',
-    'name': 'gravity_type4_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'leg_length', 'iterations', 'tol'], 'out': [
+    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module':
-    'gravity_type4', 'name': 'gravity_type4_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
-    'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
-    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity_type4', 'name':
-    'gravity_type4_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'leg_length', 'iterations', 'tol'], 'out': [
-    'q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type4_jacobian', 'name':
-    'gravity_type4_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval', 'leg_length', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_type4_jacobian', 'name':
-    'gravity_type4_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'interval',
-    'leg_length', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
-    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate', 'k']}}}, {'name': 'gravity-type5', 'title':
-    'Gravity correction type 5 (time-varying momentum)', 'section': '4.6', 'equations': ['46', '47', '48'],
-    'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'iterations', 'kind': 'int', 'default': 100,
-    'doc': "fixed-point passes T5.8 from Geyer's map", 'choices': [], 'low': 0, 'high': 1000,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
-    'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'stop when every state moved by at most tol times its scale; 0: run all passes', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity_type5', 'summary':
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
+    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
+    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
+    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
+    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
+    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
+    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
+    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 4.0,
+    'samples': 2.0}}, {'name': 'gravity-type5', 'title': 'Gravity correction type 5 (time-varying momentum)',
+    'section': '4.6', 'equations': ['46', '47', '48'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name':
+    'iterations', 'kind': 'int', 'default': 100, 'doc': "fixed-point passes T5.8 from Geyer's map", 'choices':
+    [], 'low': 0, 'high': 1000, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {},
+    'roles': ['accuracy-passes', 'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 1e-12,
+    'doc': 'stop when every state moved by at most tol times its scale; 0: run all passes', 'choices': [],
+    'low': 0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {},
+    'roles': ['tolerance']}], 'module': 'gravity_type5', 'summary':
     'the gravity torque at the 3 Gauss-Legendre nodes of the stance, interpolated: a cubic momentum '
     'P(t); radial solution about the mean compression; leg angle in closed form (docs/type5.md)', 'roles': [
     'yu-target', 'accuracy-figure', 'region'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c',
@@ -427,7 +430,7 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
     't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
     'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground', 'retraction_rate', 'k']}}}, {'name': 'geyer-vs', 'title':
+    'ground', 'retraction_rate', 'k']}}, 'fixed': {}}, {'name': 'geyer-vs', 'title':
     'Simple variable-stiffness map (Geyer et al. per half)', 'section': '5.1', 'equations': ['78', '79', '80',
     '81', '82', '83', '84', '85', '86', '87', '88', '89', '90', '91', '92', '93', '94', '96', '97', '98',
     '99', '100', '101', '102', '103', '104', '105', '106', '107', '108', '109', '110', '111', '112', '113'],
@@ -482,14 +485,15 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'continuity', 'gravity', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
     't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
     'foot_x', 'foot_y', 'touchdown_q_th', 'P_c_compression', 'P_c_decompression', 'passes'], 'wrt': [
-    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}}, {'name': 'iterative',
-    'title': 'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2', 'equations':
-    ['27', '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118', '137'],
-    'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'nodes', 'kind': 'choice', 'default':
-    '4', 'doc': "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))",
-    'choices': [{'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc':
-    '3 nodes'}, {'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}], 'low': None, 'high':
-    None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}, {'name':
+    'iterative', 'title': 'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2',
+    'equations': ['27', '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118',
+    '137'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'nodes', 'kind': 'choice',
+    'default': '4', 'doc':
+    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))", 'choices': [{
+    'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc': '3 nodes'}, {
+    'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}], 'low': None, 'high': None,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
     'Picard passes per half-stance (0 = the zeroth iterate)', 'choices': [], 'low': 0, 'high': 100,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
@@ -540,7 +544,7 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
     'touchdown_q_th', 'passes'], 'base': 'iterative_apex_return_jacobian', 'wrt': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}}]
+    'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}]
 
 HALVES = [{'name': 'exact-compression', 'title':
     'Exact compression half (touchdown to bottom, k_c; DOP853 integration)', 'section': '2.2', 'equations': [
@@ -739,7 +743,7 @@ EXACT = {'name': 'exact', 'title': 'Exact stance by numerical integration (DOP85
     'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
     't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
     'foot_y', 'touchdown_q_th'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate',
-    'k_c', 'k_d']}}}
+    'k_c', 'k_d']}}, 'fixed': {}}
 
 MODEL = {'apex_to_touchdown': {'module': 'model', 'name': 'apex_to_touchdown_entry', 'x': ['b_y_apex',
     'b_xd_apex', 'q_th_td', 'q_r_td', 'g_f', 'ground', 'retraction_rate'], 'p': [], 'out': ['touchdown_q_r',

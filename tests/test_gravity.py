@@ -217,3 +217,83 @@ def test_liftoff_speed_from_energy_lies_on_the_energy_level():
         {S.q_rd: sp.sqrt(q_rd_sq), S.q_thd: d_gravity.P_SYM / (S.m * S.q_r**2)}
     )
     assert sp.simplify(energy - d_gravity.E_SYM) == 0
+
+
+# ----------------------------------------------------------------------------------------------
+# Types 0-4 are one family (derive/mapspec.py ``MapSpec.family``): one body, the impulse rule an option.
+
+
+def test_family_members_run_the_family_kernels_with_their_rule_fixed():
+    from slipmaps.runtime.api.index import get
+
+    for kind, name in enumerate(TYPES):
+        info = get(name)
+        assert info.fixed["rule"] == kind
+        assert {s.name for s in info.kernels.values()} == {
+            "gravity_stance",
+            "gravity_state_at",
+            "gravity_apex_return",
+            "gravity_stance_jacobian",
+            "gravity_apex_return_jacobian",
+        }
+        # every slot of the shared record is filled: by an option of the map or by what it fixes
+        public = {o.name for o in info.options}
+        assert set(info.kernels["stance"].p) - set(P.values()) == public | set(info.fixed)
+        assert not public & set(info.fixed)
+        with pytest.raises(ValueError, match="has no option 'rule'"):
+            slipmaps.stance(name, P, TOUCHDOWNS[0], rule=(kind + 1) % 5)
+
+
+def test_family_rule_selects_the_types_impulse():
+    """The family kernel called with another type's rule gives that type's map: the rule is data."""
+    from slipmaps.runtime.api.calls import Call, kernel_functions
+
+    td = TOUCHDOWNS[1]
+    for name in TYPES[1:]:
+        want = slipmaps.stance(name, P, td)
+        call = Call.of("gravity-type0", P, {})
+        p = call.record(call.spec("stance")).copy()
+        spec = call.spec("stance")
+        for field, code in Call.of(name, P, {}).values.items():
+            if field in spec.p:
+                p[spec.p.index(field)] = code
+        out = np.empty(len(spec.outputs))
+        status = kernel_functions(spec)[0](np.array(td, dtype=float), p, out)
+        assert status == 0 and want.status.name == "OK"
+        assert [out[spec.outputs.index(f)] for f in spec.outputs] == [want.values[f] for f in spec.outputs]
+        assert out[spec.outputs.index("P_c")] != slipmaps.stance("gravity-type0", P, td).values["P_c"]
+
+
+def _member(**fields):
+    from slipmaps.derive.mapspec import MapSpec
+
+    base = d_gravity.MAPS[0]
+    kwargs = {
+        "name": "gravity-typex",
+        "title": base.title,
+        "section": base.section,
+        "equations": base.equations,
+        "params": base.params,
+        "requires": base.requires,
+        "build": base.build,
+        "options": base.options,
+        "family": d_gravity.FAMILY,
+        "fixed": base.fixed,
+    }
+    return MapSpec(**{**kwargs, **fields})
+
+
+def test_family_member_declaration_is_checked():
+    assert _member().fixed_codes() == d_gravity.MAPS[0].fixed_codes()
+    fixed = dict(d_gravity.MAPS[0].fixed)
+    with pytest.raises(ValueError, match=r"leaves \['interval'\] unset"):
+        _member(fixed=tuple((n, v) for n, v in fixed.items() if n != "interval"))
+    with pytest.raises(ValueError, match=r"fixes \['samples'\] it may not"):
+        _member(fixed=tuple(fixed.items()) + (("samples", 3),))
+    with pytest.raises(ValueError, match="outside its domain"):
+        _member(fixed=tuple({**fixed, "rule": 5}.items()))
+    with pytest.raises(ValueError, match="not in"):
+        _member(fixed=tuple({**fixed, "leg_length": "eq99"}.items()))
+    with pytest.raises(ValueError, match="option samples is not the family's"):
+        other = d_gravity.Option("samples", "x", 2, low=2, high=4, integer=True)
+        _member(options=tuple(other if o.name == "samples" else o for o in d_gravity.MAPS[0].options))

@@ -25,8 +25,11 @@ P_c = 0 (Geyer's map), stopping early when P_c moves by less than ``tol`` times 
 Every formula below is derived here (SymPy) from the model and from Geyer's derivation; the
 registry (:mod:`slipmaps.derive.equations.sec4`) compares the printed equations with them.
 
-A family module: it declares the maps ``gravity-type0`` ... ``gravity-type4``; type 5, a design of
-its own, is declared in :mod:`.gravity_type5` (which builds on this module's torque and energy).
+A family module: it declares the family :data:`FAMILY` (one body, generated once as
+``generated/gravity.py`` and its Jacobians, the impulse rule chosen by the option ``rule``) and
+its members, the maps ``gravity-type0`` ... ``gravity-type4`` (:data:`MAPS`), each fixing ``rule``
+to its type and the options its rule does not read (``MapSpec.family``); type 5, a design of its
+own, is declared in :mod:`.gravity_type5` (which builds on this module's torque and energy).
 """
 
 from __future__ import annotations
@@ -250,7 +253,7 @@ def _impulse_steps(kind: int, inp: MapInputs, prefix: str) -> tuple[Step, ...]:
     th_td, th_b, th_lo = _angles(prefix)
     t_b, t_s = _n(prefix, "t_bottom"), _n(prefix, "t_stance")
     q_r_b = _n(prefix, "bottom_q_r")
-    P_new, L = _n(prefix, "P_new"), _n(prefix, "L")
+    P_new, L = _n(prefix, "P_new"), sym(f"_{prefix}L")  # L: private to its branch
 
     def ramp(total):
         return Stage(((P_new, total),))
@@ -354,8 +357,30 @@ def liftoff_speed_from_energy(angle: sp.Basic, momentum: sp.Basic) -> tuple[Step
     )
 
 
-def _constant_correction(kind: int):
-    """The build function of types 0-4: Geyer's map with a constant virtual gravity effect."""
+_RULE = Option(
+    "rule",
+    "the impulse rule of P_c: the gravity correction type (0-4)",
+    0,
+    low=0,
+    high=4,
+    integer=True,
+)
+
+
+def _impulse_rules(inp: MapInputs, prefix: str) -> tuple[Step, ...]:
+    """Steps defining ``<prefix>P_new`` by the rule of the family option ``rule`` (the type)."""
+    return (
+        Switch(
+            inp.opt("rule"),
+            tuple((kind, _impulse_steps(kind, inp, prefix)) for kind in range(5)),
+            comment="the impulse rule of the correction type",
+        ),
+    )
+
+
+def _constant_correction():
+    """The build function of types 0-4: Geyer's map with a constant virtual gravity effect, its
+    impulse rule chosen by the family option ``rule``."""
 
     def build(inp: MapInputs) -> MapBuild:
         p_td, P_c, share, ramp = sym("p_td"), sym("P_c"), sym("share"), sym("ramp")
@@ -380,7 +405,7 @@ def _constant_correction(kind: int):
                 state=((P_c, sp.S.Zero),),
                 # the trajectory at every iterate, the final one included (visible after the loop)
                 evaluate=_trajectory("i_", p_td + share * P_c),
-                body=_impulse_steps(kind, inp, "i_"),
+                body=_impulse_rules(inp, "i_"),
                 update=(sym("i_P_new"),),
                 max_iter=inp.opt("iterations"),
                 tol=inp.opt("tol"),
@@ -446,6 +471,33 @@ _NOTES = (
     "Geyer et al.'s map (3.1) run with a corrected angular momentum; see the module docstring of "
     "derive/maps/gravity.py and docs/gravity.md for the two readings of (50)."
 )
+_PARAMS, _REQUIRES = ("m", "l0", "k", "g_s"), ("constant_stiffness",)
+
+#: The family of types 0-4: one body, the impulse rule chosen by the option ``rule``; each type is a
+#: member map (:data:`MAPS`) that fixes ``rule`` and the options its rule does not read.
+FAMILY = MapSpec(
+    name="gravity",
+    title="Gravity corrections types 0-4",
+    section="4.1-4.5",
+    equations=tuple(str(e) for e in range(46, 78)),
+    params=_PARAMS,
+    requires=_REQUIRES,
+    build=_constant_correction(),
+    options=(
+        _READING,
+        _SAMPLES,
+        _LEG_LENGTH,
+        _INTERVAL,
+        _RULE,
+        iterations_option(100),
+        tol_option(1e-12),
+    ),
+    extras=_EXTRAS,
+    summary="P_c by the impulse rule of type 0-4 (the member maps gravity-type0 ... gravity-type4)",
+    notes=_NOTES,
+)
+#: The value a member fixes an option its rule does not read to (any valid one).
+_UNREAD = {"samples": 2, "leg_length": "eq11", "interval": "halves"}
 
 
 def _spec(
@@ -456,19 +508,22 @@ def _spec(
     summary: str,
     roles: tuple[str, ...] = (),
 ) -> MapSpec:
+    public = {o.name for o in options}
     return MapSpec(
         name=f"gravity-type{kind}",
         title=title,
         section=f"4.{kind + 1}",
         equations=tuple(sorted(_COMMON_EQS + eqs, key=int)),
-        params=("m", "l0", "k", "g_s"),
-        requires=("constant_stiffness",),
-        build=_constant_correction(kind),
+        params=_PARAMS,
+        requires=_REQUIRES,
+        build=FAMILY.build,
         options=options,
         extras=_EXTRAS,
         summary=summary,
         notes=_NOTES,
         roles=("yu-target",) + roles,
+        family=FAMILY,
+        fixed=(("rule", kind),) + tuple((n, v) for n, v in _UNREAD.items() if n not in public),
     )
 
 

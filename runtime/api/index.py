@@ -179,6 +179,9 @@ class MapInfo:
     #: options' values joined by commas).
     specialized: tuple[str, ...] = ()
     choices: Mapping[str, str] = field(default_factory=dict)
+    #: The kernel arguments a member of a family of maps fixes (one body for several maps, its rule
+    #: an option: the gravity corrections' types 0-4), by name; not options of the map.
+    fixed: Mapping[str, float] = field(default_factory=dict)
 
     @property
     def ground_truth(self) -> bool:
@@ -213,7 +216,7 @@ class MapInfo:
         """The resolved option values (:meth:`resolve`), each checked (ValueError naming the valid
         values), and those that are kernel arguments by name (a choice as its index)."""
         encoded = {o.name: o.encode(self.name, resolved[o.name]) for o in self.options}
-        return {o.name: encoded[o.name] for o in self.options if o.kernel}
+        return {**self.fixed, **{o.name: encoded[o.name] for o in self.options if o.kernel}}
 
     def kernels_for(self, resolved: dict) -> Mapping[str, KernelSpec]:
         """Every role's kernel for the resolved options (:meth:`resolve`): with specialized options
@@ -307,6 +310,7 @@ def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
         roles=tuple(r.get("roles", ())),
         specialized=tuple(r.get("specialized", ())),
         choices=dict(r.get("choices", {})),
+        fixed=dict(r.get("fixed", {})),
         **extra,
     )
 
