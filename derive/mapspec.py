@@ -92,8 +92,9 @@ class MapSpec(Declaration):
             )
 
     def _check_member(self) -> None:
-        """A member's options are the family's (same kinds and choices; defaults of its own) but for
-        those it fixes, each to a valid value; neither has specialized options."""
+        """A member's options are the family's (same kinds and choices, in the family's order;
+        defaults of its own) but for those it fixes, each to a valid value; neither has specialized
+        options."""
         family = {o.name: o for o in self.family.options}
         fixed = dict(self.fixed)
         if self.family.family is not None or self.specialized() or self.family.specialized():
@@ -102,6 +103,9 @@ class MapSpec(Declaration):
             f = family.get(o.name)
             if f is None or (f.kind, f.values, f.low, f.high) != (o.kind, o.values, o.low, o.high):
                 raise ValueError(f"map {self.name}: option {o.name} is not the family's {self.family.name}")
+        order = [name for name in family if name in {o.name for o in self.options}]
+        if [o.name for o in self.options] != order:
+            raise ValueError(f"map {self.name}: its options are in the family's order, {order}")
         missing = set(family) - set(fixed) - {o.name for o in self.options}
         extra = set(fixed) - set(family) | set(fixed) & {o.name for o in self.options}
         if missing or extra:

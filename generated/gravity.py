@@ -40,7 +40,7 @@ def gravity_stance(x, p, out):
     derive/maps/gravity.py and docs/gravity.md for the two readings of (50).
 
     Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, interval, rule, iterations, tol);
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, rule, iterations, tol);
     writes the outputs below into out, in order, and returns
     the status (out all NaN unless OK).
 
@@ -57,9 +57,9 @@ def gravity_stance(x, p, out):
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
             bottom) in [2, 3]
+        interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
             eq21, 2 = eq23
-        interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         rule: option rule: the impulse rule of P_c: the gravity correction type (0-4) in [0, 4]
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
@@ -83,19 +83,19 @@ def gravity_stance(x, p, out):
     """
     # Total ops: 531
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k, g_s, q_r_lo, reading, samples, leg_length, interval, rule, iterations, tol) = (p[0], p[1],
+    (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, rule, iterations, tol) = (p[0], p[1],
         p[2], p[3], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
             & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
-            & math.isfinite(leg_length) & math.isfinite(interval) & math.isfinite(rule)
+            & math.isfinite(interval) & math.isfinite(leg_length) & math.isfinite(rule)
             & math.isfinite(iterations) & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0))
             & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0))
             & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0)) & ((samples
-            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) & ((leg_length == 0.0)
-            or (leg_length == 1.0) or (leg_length == 2.0)) & ((interval == 0.0) or (interval == 1.0)) & ((rule
-            == math.floor(rule)) and (rule >= 0.0) and (rule <= 4.0)) & ((iterations
+            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) & ((interval == 0.0)
+            or (interval == 1.0)) & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
+            & ((rule == math.floor(rule)) and (rule >= 0.0) and (rule <= 4.0)) & ((iterations
             == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
             and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
@@ -397,7 +397,7 @@ def gravity_state_at(x, p, out):
     68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
     Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, interval, rule, iterations, tol);
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, rule, iterations, tol);
     writes the outputs below into out, in order, and returns
     the status (out all NaN unless OK).
 
@@ -415,9 +415,9 @@ def gravity_state_at(x, p, out):
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
             bottom) in [2, 3]
+        interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
             eq21, 2 = eq23
-        interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         rule: option rule: the impulse rule of P_c: the gravity correction type (0-4) in [0, 4]
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
@@ -433,19 +433,19 @@ def gravity_state_at(x, p, out):
     """
     # Total ops: 500
     (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, q_r_lo, reading, samples, leg_length, interval, rule, iterations, tol) = (p[0], p[1],
+    (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, rule, iterations, tol) = (p[0], p[1],
         p[2], p[3], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13])
     # inputs: finite and inside their domains
     if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
             & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k)
             & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
-            & math.isfinite(leg_length) & math.isfinite(interval) & math.isfinite(rule)
+            & math.isfinite(interval) & math.isfinite(leg_length) & math.isfinite(rule)
             & math.isfinite(iterations) & math.isfinite(tol) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td
             > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s
             > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0)) & ((samples
-            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) & ((leg_length == 0.0)
-            or (leg_length == 1.0) or (leg_length == 2.0)) & ((interval == 0.0) or (interval == 1.0)) & ((rule
-            == math.floor(rule)) and (rule >= 0.0) and (rule <= 4.0)) & ((iterations
+            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) & ((interval == 0.0)
+            or (interval == 1.0)) & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
+            & ((rule == math.floor(rule)) and (rule >= 0.0) and (rule <= 4.0)) & ((iterations
             == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
             and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
@@ -723,7 +723,7 @@ def gravity_apex_return(x, p, out):
     68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
     Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, interval, rule, iterations, tol);
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, rule, iterations, tol);
     writes the outputs below into out, in order, and returns
     the status (out all NaN unless OK).
 
@@ -748,9 +748,9 @@ def gravity_apex_return(x, p, out):
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
             bottom) in [2, 3]
+        interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
             eq21, 2 = eq23
-        interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         rule: option rule: the impulse rule of P_c: the gravity correction type (0-4) in [0, 4]
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
@@ -778,20 +778,20 @@ def gravity_apex_return(x, p, out):
     """
     # Total ops: 3
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, interval, rule, iterations,
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, rule, iterations,
         tol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
             & math.isfinite(k) & math.isfinite(g_s) & math.isfinite(g_f) & math.isfinite(q_r_td)
             & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
-            & math.isfinite(leg_length) & math.isfinite(interval) & math.isfinite(rule)
+            & math.isfinite(interval) & math.isfinite(leg_length) & math.isfinite(rule)
             & math.isfinite(iterations) & math.isfinite(tol) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
             < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0))
             & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0)
             or (reading == 1.0)) & ((samples == math.floor(samples)) and (samples >= 2.0) and (samples
-            <= 3.0)) & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) & ((interval
-            == 0.0) or (interval == 1.0)) & ((rule == math.floor(rule)) and (rule >= 0.0) and (rule <= 4.0))
+            <= 3.0)) & ((interval == 0.0) or (interval == 1.0)) & ((leg_length == 0.0) or (leg_length == 1.0)
+            or (leg_length == 2.0)) & ((rule == math.floor(rule)) and (rule >= 0.0) and (rule <= 4.0))
             & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)

@@ -10,7 +10,7 @@
 #   flight.py sha256:af2637d59c8ab493
 #   geyer.py sha256:f781cbbce76a77c5
 #   geyer_vs.py sha256:989b828600db2cf3
-#   gravity.py sha256:4edb52ddd8446772
+#   gravity.py sha256:2700c6aace1dadb9
 #   gravity_type5.py sha256:2521abfe9185b31a
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
@@ -688,7 +688,7 @@ def zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 0.0, 1.0, 0.0,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 0.0, 1.0, 0.0,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -710,7 +710,7 @@ def zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 1.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -732,7 +732,7 @@ def zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 2.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 2.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -754,7 +754,7 @@ def zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 3.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 3.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -776,7 +776,7 @@ def zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 4.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 4.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:

@@ -10,7 +10,7 @@
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_jacobian.py sha256:439802d2318bb4fa
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   gravity_jacobian.py sha256:c9554012357ab4cd
+#   gravity_jacobian.py sha256:1ecb99831a9e2a6d
 #   gravity_type5_jacobian.py sha256:cd2fbda68786b927
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
@@ -278,7 +278,7 @@ def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 0.0, 1.0, 0.0,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 0.0, 1.0, 0.0,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -309,7 +309,7 @@ def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 1.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -340,7 +340,7 @@ def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 2.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 2.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -371,7 +371,7 @@ def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 3.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 3.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -402,7 +402,7 @@ def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(14), 14)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 1.0, 4.0, 100.0, 1e-12,)
+        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 4.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:27ff12a8b153a7ac
-#   iterative_report.py sha256:c2bce29e1905a976
+#   iterative.py sha256:bf360594d8004587
+#   iterative_report.py sha256:da5deac4c040853a
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""

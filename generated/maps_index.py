@@ -176,24 +176,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
     'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
     'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
     'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
     'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
     't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
     'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
     'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
     'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
     ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
     'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 0.0,
@@ -222,24 +222,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
     'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
     'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
     'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
     'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
     't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
     'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
     'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
     'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
     ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
     'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 1.0,
@@ -274,24 +274,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
     'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
     'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
     'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
     'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
     't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
     'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
     'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
     'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
     ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
     'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 2.0,
@@ -321,24 +321,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
     'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
     'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
     'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
     'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
     't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
     'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
     'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
     'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
     ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
     'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 3.0,
@@ -375,24 +375,24 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
     'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
     'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval',
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
     'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
     'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
     't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
     'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
     'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
+    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
     't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
     'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
     ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'leg_length', 'interval', 'rule', 'iterations', 'tol'], 'out': [
+    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
     'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
     'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
     'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 4.0,

@@ -507,8 +507,9 @@ NOMINAL = {
 
 
 def option_defaults(row: dict) -> dict[str, float]:
-    """Each option's default as the kernel receives it (a choice as the index of its value)."""
-    out = {}
+    """Each option's default as the kernel receives it (a choice as the index of its value), and
+    what a family member fixes."""
+    out = dict(row["fixed"])
     for opt in row["options"]:
         if opt["kind"] == "choice":
             out[opt["name"]] = float([ch["value"] for ch in opt["choices"]].index(opt["default"]))

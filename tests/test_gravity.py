@@ -294,6 +294,8 @@ def test_family_member_declaration_is_checked():
         _member(fixed=tuple({**fixed, "rule": 5}.items()))
     with pytest.raises(ValueError, match="not in"):
         _member(fixed=tuple({**fixed, "leg_length": "eq99"}.items()))
+    with pytest.raises(ValueError, match="in the family's order"):
+        _member(options=tuple(reversed(d_gravity.MAPS[0].options)))
     with pytest.raises(ValueError, match="option samples is not the family's"):
         other = d_gravity.Option("samples", "x", 2, low=2, high=4, integer=True)
         _member(options=tuple(other if o.name == "samples" else o for o in d_gravity.MAPS[0].options))

@@ -92,8 +92,10 @@ class Kernel:
         return tuple(self.row["options"]) if self.row else ()
 
     def call(self, env: dict):
-        """The kernel at the arguments of ``env`` (by name, whatever its calling convention)."""
-        return kernels.invoke(kernels.declaration(self.module, self.name), env)
+        """The kernel at the arguments of ``env`` (by name, whatever its calling convention), with
+        what a family member fixes (its row's ``fixed``: the family's options it does not expose)."""
+        fixed = self.row["fixed"] if self.row else {}
+        return kernels.invoke(kernels.declaration(self.module, self.name), {**fixed, **env})
 
     @property
     def module(self) -> str:
@@ -385,7 +387,9 @@ def test_kernel_signatures_match_the_index(kernel):
     assert _signature(kernel.batch) == ("X", "P", "OUT", "STATUS")
     assert set(kernel.rows) <= set(kernel.args)
     options = tuple(o["name"] for o in kernel.options if o["kernel"])
-    assert kernel.args[len(kernel.args) - len(options) :] == options
+    fixed = kernel.row["fixed"] if kernel.row else {}  # a family member's: the family's order
+    tail = kernel.args[len(kernel.args) - len(options) - len(fixed) :]
+    assert tuple(a for a in tail if a not in fixed) == options and set(tail) == set(options) | set(fixed)
 
 
 def test_every_map_has_stance_and_apex_return_kernels():
@@ -697,6 +701,7 @@ def run_batch(kernel: Kernel, env: dict, rows: np.ndarray) -> tuple[np.ndarray, 
     n = rows.shape[0]
     spec = kernel.row["kernels"][kernel.role]
     X = np.ascontiguousarray(rows, dtype=float)
+    env = {**kernel.row["fixed"], **env}  # what a family member fixes (as Kernel.call)
     P = np.array([[float(env.get(f, math.nan)) for f in spec["p"]]])
     out = np.empty((n, len(kernel.outputs)))
     status = np.empty(n, dtype=np.int64)

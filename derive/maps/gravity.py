@@ -486,8 +486,8 @@ FAMILY = MapSpec(
     options=(
         _READING,
         _SAMPLES,
-        _LEG_LENGTH,
         _INTERVAL,
+        _LEG_LENGTH,
         _RULE,
         iterations_option(100),
         tol_option(1e-12),
