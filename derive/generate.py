@@ -212,15 +212,19 @@ def _doc_key(k: dict) -> tuple:
 def _share_docs(kernels: list[dict]) -> None:
     """A kernel whose docstring would repeat an earlier kernel's of the module word for word (the
     choices of a specialized option: the same arguments, returns and statuses) refers to that
-    kernel's instead (``doc_ref``): each choice's kernel and batch form still say what they are,
-    the module says the rest once."""
-    first: dict[tuple, str] = {}
+    kernel's instead (``doc_ref``; for its equations too where they are the same,
+    ``doc_ref_equations``): each choice's kernel and batch form still say what they are, the module
+    says the rest once."""
+    first: dict[tuple, dict] = {}
     for k in kernels:
+        k["doc_ref"], k["doc_ref_equations"] = "", False
         if k["shared_by"]:  # a shared body's docstring says what it is (derive/share.py)
-            k["doc_ref"] = ""
             continue
-        ref = first.setdefault(_doc_key(k), k["name"])
-        k["doc_ref"] = "" if ref == k["name"] else ref
+        ref = first.setdefault(_doc_key(k), k)
+        if ref is not k:
+            # the equations too, where they are the same (they are not part of the key)
+            same = bool(k["equations"]) and ref["equations"] == k["equations"]
+            k["doc_ref"], k["doc_ref_equations"] = ref["name"], same
 
 
 def _render_module(mod: Module, kernels: list[dict], files: dict[str, str]) -> str:

@@ -680,7 +680,7 @@ def zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
 
-    Arguments, returns and status: the same as :func:`zeroth_geyer`'s.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 0
     # stance: Gravity correction type 0 (leg length l0)
@@ -702,7 +702,7 @@ def zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
 
-    Arguments, returns and status: the same as :func:`zeroth_geyer`'s.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 0
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
@@ -724,7 +724,7 @@ def zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
 
-    Arguments, returns and status: the same as :func:`zeroth_geyer`'s.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 0
     # stance: Gravity correction type 2 (average leg length)
@@ -746,7 +746,7 @@ def zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
 
-    Arguments, returns and status: the same as :func:`zeroth_geyer`'s.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 0
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
@@ -768,7 +768,7 @@ def zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
 
-    Arguments, returns and status: the same as :func:`zeroth_geyer`'s.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 0
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
@@ -790,7 +790,7 @@ def zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
 
-    Arguments, returns and status: the same as :func:`zeroth_geyer`'s.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 0
     # stance: Gravity correction type 5 (time-varying momentum)
@@ -812,7 +812,7 @@ def zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c.
 
-    Arguments, returns and status: the same as :func:`zeroth_geyer`'s.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 0
     # stance: Simple variable-stiffness map (Geyer et al. per half)
@@ -1116,11 +1116,8 @@ def iterative_stance_zeroth_held(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_held, 1.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_held, 1.0)
@@ -1140,12 +1137,9 @@ def iterative_apex_return_zeroth_held(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_held.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_held. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_held)
@@ -1165,11 +1159,8 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type0, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type0, 0.0)
@@ -1189,12 +1180,9 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_gravity_type0.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_gravity_type0. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_gravity_type0)
@@ -1214,11 +1202,8 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type1, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type1, 0.0)
@@ -1238,12 +1223,9 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_gravity_type1.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_gravity_type1. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_gravity_type1)
@@ -1263,11 +1245,8 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type2, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type2, 0.0)
@@ -1287,12 +1266,9 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_gravity_type2.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_gravity_type2. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_gravity_type2)
@@ -1312,11 +1288,8 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type3, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type3, 0.0)
@@ -1336,12 +1309,9 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_gravity_type3.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_gravity_type3. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_gravity_type3)
@@ -1361,11 +1331,8 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type4, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type4, 0.0)
@@ -1385,12 +1352,9 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_gravity_type4.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_gravity_type4. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_gravity_type4)
@@ -1410,11 +1374,8 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_gravity_type5, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_gravity_type5, 0.0)
@@ -1434,12 +1395,9 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_gravity_type5.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_gravity_type5. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_gravity_type5)
@@ -1459,11 +1417,8 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_zeroth_shared` with zeroth_geyer_vs, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of :func:`iterative_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_stance_zeroth_shared(x, p, out, zeroth_geyer_vs, 0.0)
@@ -1483,12 +1438,9 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_zeroth_shared` with
-    iterative_stance_zeroth_geyer_vs.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_zeroth_geyer`'s.
+    iterative_stance_zeroth_geyer_vs. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth_geyer_vs)

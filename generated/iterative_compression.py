@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:bf360594d8004587
+#   iterative.py sha256:eb51e8e70c20d833
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -139,11 +139,9 @@ def iterative_compression_zeroth_held(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_held.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_held)
@@ -163,11 +161,9 @@ def iterative_compression_zeroth_gravity_type0(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_gravity_type0.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_gravity_type0)
@@ -187,11 +183,9 @@ def iterative_compression_zeroth_gravity_type1(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_gravity_type1.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_gravity_type1)
@@ -211,11 +205,9 @@ def iterative_compression_zeroth_gravity_type2(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_gravity_type2.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_gravity_type2)
@@ -235,11 +227,9 @@ def iterative_compression_zeroth_gravity_type3(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_gravity_type3.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_gravity_type3)
@@ -259,11 +249,9 @@ def iterative_compression_zeroth_gravity_type4(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_gravity_type4.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_gravity_type4)
@@ -283,11 +271,9 @@ def iterative_compression_zeroth_gravity_type5(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_gravity_type5.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_gravity_type5)
@@ -307,11 +293,9 @@ def iterative_compression_zeroth_geyer_vs(x, p, out):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
-    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
-
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_geyer_vs.
-
-    Arguments, returns and status: the same as :func:`iterative_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_compression_zeroth_shared(x, p, out, zeroth_geyer_vs)

@@ -269,8 +269,8 @@ def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
     # stance: Gravity correction type 0 (leg length l0)
@@ -300,8 +300,8 @@ def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
@@ -331,8 +331,8 @@ def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
     # stance: Gravity correction type 2 (average leg length)
@@ -362,8 +362,8 @@ def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
@@ -393,8 +393,8 @@ def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
@@ -424,8 +424,8 @@ def zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
     # stance: Gravity correction type 5 (time-varying momentum)
@@ -455,8 +455,8 @@ def zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Arguments, returns and status: the same as
-    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`'s.
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
     # stance: Simple variable-stiffness map (Geyer et al. per half)
@@ -2284,12 +2284,9 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0. Equations, arguments, returns
+    and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2310,12 +2307,9 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_held.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_held. Equations, arguments, returns and status: those of
+    :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_held)
@@ -2335,12 +2329,9 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2362,12 +2353,9 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_gravity_type0.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_gravity_type0. Equations, arguments, returns and status:
+    those of :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2389,12 +2377,9 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2416,12 +2401,9 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_gravity_type1.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_gravity_type1. Equations, arguments, returns and status:
+    those of :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2443,12 +2425,9 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2470,12 +2449,9 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_gravity_type2.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_gravity_type2. Equations, arguments, returns and status:
+    those of :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2497,12 +2473,9 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2524,12 +2497,9 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_gravity_type3.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_gravity_type3. Equations, arguments, returns and status:
+    those of :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2551,12 +2521,9 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2578,12 +2545,9 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_gravity_type4.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_gravity_type4. Equations, arguments, returns and status:
+    those of :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2605,12 +2569,9 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2632,12 +2593,9 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_gravity_type5.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_gravity_type5. Equations, arguments, returns and status:
+    those of :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -2659,12 +2617,9 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
     """Iterative stance map (Schwind and Koditschek, converging form): stance outputs and their derivatives
     with respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_stance_jacobian_zeroth_shared` with
-    zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_zeroth_geyer`'s.
+    zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_stance_jacobian_zeroth_shared(x, p, out,
@@ -2685,12 +2640,9 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, converging form), and its derivatives
     with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
-
     Runs the shared body :func:`iterative_apex_return_jacobian_zeroth_shared` with
-    iterative_stance_jacobian_zeroth_geyer_vs.
-
-    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_stance_jacobian_zeroth_geyer_vs. Equations, arguments, returns and status: those
+    of :func:`iterative_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jacobian_zeroth_geyer_vs)

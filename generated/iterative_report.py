@@ -9,7 +9,7 @@
 #   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:af2637d59c8ab493
 #   geyer_vs.py sha256:989b828600db2cf3
-#   iterative.py sha256:bf360594d8004587
+#   iterative.py sha256:eb51e8e70c20d833
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -630,13 +630,9 @@ def iterative_report_stance_zeroth_held(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_held, 1.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_held, 1.0)
@@ -655,14 +651,9 @@ def iterative_report_stance_zeroth_held_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_held(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_held.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_held. Equations, arguments, returns and status: those of
+    :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_held)
@@ -682,14 +673,9 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type0, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    zeroth_gravity_type0, 0.0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type0, 0.0)
@@ -708,14 +694,9 @@ def iterative_report_stance_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_gravity_type0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_gravity_type0. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type0)
@@ -736,14 +717,9 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type1, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    zeroth_gravity_type1, 0.0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type1, 0.0)
@@ -762,14 +738,9 @@ def iterative_report_stance_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_gravity_type1.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_gravity_type1. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type1)
@@ -790,14 +761,9 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type2, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    zeroth_gravity_type2, 0.0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type2, 0.0)
@@ -816,14 +782,9 @@ def iterative_report_stance_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_gravity_type2.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_gravity_type2. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type2)
@@ -844,14 +805,9 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type3, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    zeroth_gravity_type3, 0.0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type3, 0.0)
@@ -870,14 +826,9 @@ def iterative_report_stance_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_gravity_type3.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_gravity_type3. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type3)
@@ -898,14 +849,9 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type4, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    zeroth_gravity_type4, 0.0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type4, 0.0)
@@ -924,14 +870,9 @@ def iterative_report_stance_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_gravity_type4.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_gravity_type4. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type4)
@@ -952,14 +893,9 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with
-    zeroth_gravity_type5, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    zeroth_gravity_type5, 0.0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_gravity_type5, 0.0)
@@ -978,14 +914,9 @@ def iterative_report_stance_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_gravity_type5.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_gravity_type5. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_gravity_type5)
@@ -1006,14 +937,9 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
     states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_zeroth_shared` with zeroth_geyer_vs,
-    0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
+    0.0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_stance_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_stance_zeroth_shared(x, p, out, zeroth_geyer_vs, 0.0)
@@ -1032,14 +958,9 @@ def iterative_report_stance_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
 def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_zeroth_shared` with
-    iterative_report_stance_zeroth_geyer_vs.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
+    iterative_report_stance_zeroth_geyer_vs. Equations, arguments, returns and status: those of
+    :func:`iterative_report_apex_return_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stance_zeroth_geyer_vs)

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:bf360594d8004587
-#   iterative_report.py sha256:da5deac4c040853a
+#   iterative.py sha256:eb51e8e70c20d833
+#   iterative_report.py sha256:b5705a263654b600
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -146,12 +146,9 @@ def iterative_report_compression_zeroth_geyer_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_held(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with zeroth_held.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_held)
@@ -170,13 +167,9 @@ def iterative_report_compression_zeroth_held_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_gravity_type0(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with
-    zeroth_gravity_type0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    zeroth_gravity_type0. Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_gravity_type0)
@@ -196,13 +189,9 @@ def iterative_report_compression_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_gravity_type1(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with
-    zeroth_gravity_type1.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    zeroth_gravity_type1. Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_gravity_type1)
@@ -222,13 +211,9 @@ def iterative_report_compression_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_gravity_type2(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with
-    zeroth_gravity_type2.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    zeroth_gravity_type2. Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_gravity_type2)
@@ -248,13 +233,9 @@ def iterative_report_compression_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_gravity_type3(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with
-    zeroth_gravity_type3.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    zeroth_gravity_type3. Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_gravity_type3)
@@ -274,13 +255,9 @@ def iterative_report_compression_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_gravity_type4(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with
-    zeroth_gravity_type4.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    zeroth_gravity_type4. Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_gravity_type4)
@@ -300,13 +277,9 @@ def iterative_report_compression_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_gravity_type5(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with
-    zeroth_gravity_type5.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    zeroth_gravity_type5. Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_gravity_type5)
@@ -326,13 +299,9 @@ def iterative_report_compression_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
 def iterative_report_compression_zeroth_geyer_vs(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
-    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
-    132, 133, 134, 135, 154.
-
     Runs the shared body :func:`iterative_report_compression_zeroth_shared` with
-    zeroth_geyer_vs.
-
-    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
+    zeroth_geyer_vs. Equations, arguments, returns and status: those of
+    :func:`iterative_report_compression_zeroth_geyer`.
     """
     # Total ops: 0
     return iterative_report_compression_zeroth_shared(x, p, out, zeroth_geyer_vs)

@@ -9,7 +9,7 @@
 #   support.py sha256:cd017e56afa49b84
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   iterative_jacobian.py sha256:4eb58ee004b701e1
+#   iterative_jacobian.py sha256:aa7ab1699a8799ad
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -1414,14 +1414,9 @@ def iterative_report_stance_jacobian_zeroth_held(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 1.0. Equations, arguments, returns
+    and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1442,14 +1437,9 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_held.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_held. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1471,14 +1461,9 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1500,14 +1485,9 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_gravity_type0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_gravity_type0. Equations, arguments, returns and
+    status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1529,14 +1509,9 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1558,14 +1533,9 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_gravity_type1.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_gravity_type1. Equations, arguments, returns and
+    status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1587,14 +1557,9 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1616,14 +1581,9 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_gravity_type2.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_gravity_type2. Equations, arguments, returns and
+    status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1645,14 +1605,9 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1674,14 +1629,9 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_gravity_type3.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_gravity_type3. Equations, arguments, returns and
+    status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1703,14 +1653,9 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1732,14 +1677,9 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_gravity_type4.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_gravity_type4. Equations, arguments, returns and
+    status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1761,14 +1701,9 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_gravity_type5_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1790,14 +1725,9 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_gravity_type5.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_gravity_type5. Equations, arguments, returns and
+    status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
@@ -1819,14 +1749,9 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(x, p, out):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_stance_jacobian_zeroth_shared` with
-    zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0.
-
-    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
+    zeroth_geyer_vs_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d, 0.0. Equations, arguments,
+    returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_stance_jacobian_zeroth_shared(x, p, out,
@@ -1848,14 +1773,9 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
-    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
-    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
     Runs the shared body :func:`iterative_report_apex_return_jacobian_zeroth_shared` with
-    iterative_report_stance_jacobian_zeroth_geyer_vs.
-
-    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
+    iterative_report_stance_jacobian_zeroth_geyer_vs. Equations, arguments, returns and status:
+    those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`.
     """
     # Total ops: 0
     return (iterative_report_apex_return_jacobian_zeroth_shared(x, p, out,
