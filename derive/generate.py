@@ -40,7 +40,7 @@ from .render import render
 from .share import share_bodies
 from .status import STATUS_CODES
 from .tangent import Differentiator, widened
-from .wrap import dense, wrap
+from .wrap import dense, intern_repeats, wrap
 
 ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
@@ -367,7 +367,7 @@ def build_files() -> dict[str, str]:
             tables=[
                 # the first line holds "NAME = " too: every line within the limit
                 (name, dense(value, first=len(name) + 3))
-                for name, value in index.items()
+                for name, value in intern_repeats(index)
             ],
             **common,
         )

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import ast
 import io
+import itertools
 import re
 import textwrap
 import tokenize
@@ -207,6 +208,96 @@ def dense(value, indent: int = 4, limit: int = LIMIT, first: int = 0) -> str:
             line = joined
     lines.append(line)
     out = ("\n" + " " * indent).join(lines)
-    if ast.literal_eval(out.replace("\n", " ")) != value:
+    refs = _refs(value)
+    text = out.replace("\n", " ")
+    back = eval(text, {"__builtins__": {}}, refs) if refs else ast.literal_eval(text)  # noqa: S307
+    if back != _resolved(value):
         raise AssertionError("dense(): the packed text does not read back as the value")
+    return out
+
+
+class Ref:
+    """A reference, in data :func:`dense` packs, to a constant of the module defined before it:
+    rendered as its bare ``name`` (:func:`intern_repeats`)."""
+
+    def __init__(self, name: str, value):
+        self.name, self.value = name, value
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+def _children(value):
+    if isinstance(value, dict):
+        return value.values()
+    return value if isinstance(value, list) else ()
+
+
+def _refs(value) -> dict:
+    """The constants ``value`` references, by name, with their values resolved."""
+    if isinstance(value, Ref):
+        return {value.name: _resolved(value.value)}
+    out: dict = {}
+    for child in _children(value):
+        out.update(_refs(child))
+    return out
+
+
+def _resolved(value):
+    """``value`` with every :class:`Ref` replaced by the value it names."""
+    if isinstance(value, Ref):
+        return _resolved(value.value)
+    if isinstance(value, dict):
+        return {k: _resolved(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_resolved(v) for v in value]
+    return value
+
+
+def intern_repeats(tables: dict, prefix: str = "_repeated", least: int = 120) -> list[tuple[str, object]]:
+    """``tables`` (name -> plain data) as a list of module constants in which every list or dict
+    that occurs more than once and takes at least ``least`` characters is written once, as a
+    constant ``<prefix><i>`` defined before its first use, and referenced (:class:`Ref`) elsewhere:
+    the index's repeated layouts and a family's kernels, published once. Deterministic: constants
+    are numbered in the order of first use, a table's fields in their order."""
+    counts: dict[str, int] = {}
+
+    def count(value):
+        if isinstance(value, (list, dict)):
+            counts[repr(value)] = counts.get(repr(value), 0) + 1
+            for child in _children(value):
+                count(child)
+
+    for value in tables.values():
+        count(value)
+    shared = {r for r, c in counts.items() if c > 1 and len(r) >= least}
+    names: dict[str, Ref] = {}
+    out: list[tuple[str, object]] = []
+    number = itertools.count()
+
+    def rebuild(value):
+        """``value`` with its children replaced."""
+        if isinstance(value, dict):
+            return {k: replace(v) for k, v in value.items()}
+        return [replace(v) for v in value]
+
+    def replace(value):
+        if not isinstance(value, (list, dict)):
+            return value
+        key = repr(value)
+        if key not in names and key in shared:
+            new = rebuild(value)  # its repeated parts first, numbered before it
+            names[key] = Ref(f"{prefix}{next(number)}", new)
+            out.append((names[key].name, new))
+        return names[key] if key in names else rebuild(value)
+
+    for name, value in tables.items():
+        key = repr(value)
+        if isinstance(value, (list, dict)) and key in shared and key not in names:
+            # a table the others repeat: they reference the table itself
+            names[key] = ref = Ref(name, None)
+            ref.value = rebuild(value)
+            out.append((name, ref.value))
+        else:
+            out.append((name, replace(value)))
     return out

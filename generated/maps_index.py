@@ -12,6 +12,9 @@ The runtime API (``slipmaps.maps()``, ``slipmaps.stance`` ...), the command line
 run over every map and the benchmark read this module; nothing else lists the maps or the output
 layouts. ``MAPS`` rows: name, title, report section, equations, requirements, parameters,
 options (kind, default, choices), generated module and kernel names, argument orders, extras.
+A list or dict the tables repeat (a layout, an option, a family's kernels) is written once, as
+``_repeated<i>`` before its first use, and named where it recurs (derive/wrap.py,
+``intern_repeats``): the same object, which no reader modifies.
 """
 
 STANCE_OUTPUTS = [{'name': 't_bottom', 'doc': 'time from touchdown to the bottom', 'unit': 's', 'odd': False},
@@ -61,6 +64,177 @@ TOUCHDOWN = ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td']
 APEX_PUBLIC = {'b_y_apex': 'apex_height', 'b_xd_apex': 'apex_speed', 'q_th_td': 'touchdown_angle', 'ground':
     'ground', 'retraction_rate': 'retraction_rate'}
 
+_repeated0 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']
+
+_repeated1 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
+    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th']
+
+_repeated2 = {'value': 'factor', 'doc':
+    'only 1/H^{-1} at the point, the weights 1/sigma^2 and sigma integrated exactly: (133)-(135), '
+    '(148)-(150), with (134)/(149) keeping p_th' }
+
+_repeated3 = [{'value': 'integrand', 'doc':
+    'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, _repeated2]
+
+_repeated4 = {'name': 'variant', 'kind': 'choice', 'default': 'integrand', 'doc':
+    'which mean-value form each step uses', 'choices': _repeated3, 'low': None, 'high': None,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants',
+    'convergence-series']}
+
+_repeated5 = {'name': 'iterations', 'kind': 'int', 'default': 1, 'doc':
+    "iterations n of each half's chain (0 = the zeroth iterate)", 'choices': [], 'low': 0, 'high': 100,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
+    'convergence-passes']}
+
+_repeated6 = {'value': 'gravity-type4', 'doc':
+    'Gravity correction type 4 (average leg length on [t_i, t_f]) (section 4.5) with k_c'}
+
+_repeated7 = [{'value': 'geyer', 'doc': "Geyer et al.'s map (section 3.1) with k_c"}, {'value': 'held', 'doc':
+    'the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown'}, {'value':
+    'gravity-type0', 'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with k_c'}, {'value':
+    'gravity-type1', 'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section 4.2) with k_c'}, {
+    'value': 'gravity-type2', 'doc': 'Gravity correction type 2 (average leg length) (section 4.3) with k_c'},
+    {'value': 'gravity-type3', 'doc':
+    'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section 4.4) with k_c'}, _repeated6, {'value':
+    'gravity-type5', 'doc': 'Gravity correction type 5 (time-varying momentum) (section 4.6) with k_c'}, {
+    'value': 'geyer-vs', 'doc':
+    'Simple variable-stiffness map (Geyer et al. per half) (section 5.1) with k_c, k_d'}]
+
+_repeated8 = {'name': 'zeroth', 'kind': 'choice', 'default': 'geyer', 'doc':
+    "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear "
+    "in u between the half's ends", 'choices': _repeated7, 'low': None, 'high': None, 'at_rest_length': [],
+    'kernel': False, 'specialize': True, 'backends': {}, 'roles': ['accuracy-variants']}
+
+_repeated9 = [{'value': 'zeroth', 'doc':
+    "the zeroth iterate's bottom (with Geyer's map: (154), l0 (1 + a_ab - b_ab))"}, {'value': 'eq153', 'doc':
+    "the quartic (153) of a vertical bottom with the touchdown's energy and momentum"}]
+
+_repeated10 = {'name': 'bottom_length', 'kind': 'choice', 'default': 'zeroth', 'doc':
+    'the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates)', 'choices':
+    _repeated9, 'low': None, 'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False,
+    'backends': {}, 'roles': ['accuracy-variants']}
+
+_repeated11 = [_repeated4, _repeated5, _repeated8, _repeated10]
+
+_repeated12 = {'geyer': '_zeroth_geyer', 'held': '_zeroth_held', 'gravity-type0': '_zeroth_gravity_type0',
+    'gravity-type1': '_zeroth_gravity_type1', 'gravity-type2': '_zeroth_gravity_type2', 'gravity-type3':
+    '_zeroth_gravity_type3', 'gravity-type4': '_zeroth_gravity_type4', 'gravity-type5':
+    '_zeroth_gravity_type5', 'geyer-vs': '_zeroth_geyer_vs'}
+
+_repeated13 = {'value': 'mean', 'doc':
+    'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from '
+    'the momentum at that instant, liftoff radial speed from the exact energy (27)' }
+
+_repeated14 = [_repeated13, {'value': 'report', 'doc':
+    "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}]
+
+_repeated15 = {'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc':
+    "how P_c enters Geyer's formulas, eq (50)", 'choices': _repeated14, 'low': None, 'high': None,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-readings']}
+
+_repeated16 = {'name': 'samples', 'kind': 'int', 'default': 2, 'doc':
+    'number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom)', 'choices': [], 'low': 2,
+    'high': 3, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    'accuracy-variants']}
+
+_repeated17 = [{'name': 'P_c', 'doc': 'virtual gravity effect: the stance impulse added to p_th', 'unit':
+    'N m s', 'odd': True}, {'name': 'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}]
+
+_repeated18 = ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval',
+    'leg_length', 'rule', 'iterations', 'tol']
+
+_repeated19 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']
+
+_repeated20 = {'module': 'gravity', 'name': 'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': _repeated18, 'out': _repeated19}
+
+_repeated21 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th',
+    'P_c', 'passes']
+
+_repeated22 = {'module': 'gravity', 'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
+    'ground', 'retraction_rate'], 'p': _repeated18, 'out': _repeated21}
+
+_repeated23 = {'module': 'gravity', 'name': 'gravity_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': _repeated18, 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}
+
+_repeated24 = {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian', 'x': ['q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': _repeated18, 'out': _repeated19, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td', 'k']}
+
+_repeated25 = {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': _repeated18, 'out': _repeated21, 'wrt': [
+    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}
+
+_repeated26 = {'stance': _repeated20, 'apex_return': _repeated22, 'state_at': _repeated23, 'stance_jacobian':
+    _repeated24, 'apex_return_jacobian': _repeated25}
+
+_repeated27 = {'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
+    "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes']}
+
+_repeated28 = {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
+    'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
+    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    'tolerance']}
+
+_repeated29 = [{'value': 'eq11', 'doc':
+    '(11), eqs (55)-(57) and (67)-(68) (their printed forms lack an l0 on the b term)'}, {'value': 'eq21',
+    'doc': '(21), eqs (58)-(59) and (70)-(72); touchdown at l0 only'}, {'value': 'eq23', 'doc':
+    '(23), eqs (60)-(61) and (73)-(75); touchdown at l0 only'}]
+
+_repeated30 = {'name': 'leg_length', 'kind': 'choice', 'default': 'eq11', 'doc':
+    'the stance solution the average leg length is taken from', 'choices': _repeated29, 'low': None, 'high':
+    None, 'at_rest_length': ['eq21', 'eq23'], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    'accuracy-variants']}
+
+_repeated31 = {'value': 'halves', 'doc':
+    "touchdown to bottom and bottom to liftoff, summed (the report's suggestion for the split "
+    'maps of section 5)' }
+
+_repeated32 = [{'value': 'stance', 'doc': 'one interval, touchdown to liftoff'}, _repeated31]
+
+_repeated33 = {'name': 'interval', 'kind': 'choice', 'default': 'halves', 'doc':
+    'the intervals [t_i, t_f] of the correction', 'choices': _repeated32, 'low': None, 'high': None,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants']}
+
+_repeated34 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c_compression', 'P_c_decompression',
+    'passes']
+
+_repeated35 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th',
+    'P_c_compression', 'P_c_decompression', 'passes']
+
+_repeated36 = [{'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc':
+    '3 nodes'}, {'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}]
+
+_repeated37 = {'name': 'nodes', 'kind': 'choice', 'default': '4', 'doc':
+    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))", 'choices':
+    _repeated36, 'low': None, 'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False,
+    'backends': {}, 'roles': ['accuracy-variants']}
+
+_repeated38 = {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
+    'Picard passes per half-stance (0 = the zeroth iterate)', 'choices': [], 'low': 0, 'high': 100,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
+    'convergence-passes']}
+
+_repeated39 = {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
+    'stop when no node value moves by more than tol (relative; 0 = run every pass)', 'choices': [], 'low':
+    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    'tolerance']}
+
+_repeated40 = [_repeated37, _repeated38, _repeated39, _repeated8]
+
+_repeated41 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'passes']
+
+_repeated42 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th',
+    'passes']
+
 MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'section': '3.1', 'equations': [
     '7', '8', '9', '10', '11', '12', '13', '14', '17', '18', '19', '20'], 'params': ['m', 'l0', 'k', 'g_s'],
     'options': [], 'module': 'geyer', 'summary':
@@ -68,102 +242,46 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'roles': ['baseline', 'accuracy-figure', 'region', 'default'], 'specialized': [], 'choices': {}, 'extras':
     [], 'requires': ['constant_stiffness'], 'as_printed': False, 'approximation_statuses': [], 'kernels': {
     'stance': {'module': 'geyer', 'name': 'geyer_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': ['t_bottom', 't_stance', 'bottom_q_r',
-    'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd']}, 'apex_return': {'module': 'geyer', 'name': 'geyer_apex_return', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td',
-    'q_r_lo'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th']},
+    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': _repeated0}, 'apex_return': {'module':
+    'geyer', 'name': 'geyer_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': _repeated1},
     'state_at': {'module': 'geyer', 'name': 'geyer_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td',
     'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out': ['q_r', 'q_rd', 'q_th',
     'q_thd']}, 'stance_jacobian': {'module': 'geyer_jacobian', 'name': 'geyer_stance_jacobian', 'x': [
     'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'],
-    'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'geyer_jacobian', 'name': 'geyer_apex_return_jacobian', 'x': [
-    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}},
-    'fixed': {}}, {'name': 'iterative-report', 'title':
-    'Iterative stance map (Schwind and Koditschek, as printed)', 'section': '3.2', 'equations': ['27', '29',
-    '30', '31', '32', '33', '35', '37', '38', '39', '40', '41', '42', '43', '44', '45', '98', '114', '115',
-    '116', '117', '118', '119', '120', '121', '122', '123', '124', '125', '126', '128', '129', '130', '131',
-    '132', '133', '134', '135', '137', '138', '139', '140', '141', '143', '144', '145', '146', '147', '148',
-    '149', '150', '154'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'variant', 'kind':
-    'choice', 'default': 'integrand', 'doc': 'which mean-value form each step uses', 'choices': [{'value':
-    'integrand', 'doc': 'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, {'value':
-    'factor', 'doc':
-    'only 1/H^{-1} at the point, the weights 1/sigma^2 and sigma integrated exactly: (133)-(135), '
-    '(148)-(150), with (134)/(149) keeping p_th' }], 'low': None, 'high': None, 'at_rest_length': [],
-    'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants',
-    'convergence-series']}, {'name': 'iterations', 'kind': 'int', 'default': 1, 'doc':
-    "iterations n of each half's chain (0 = the zeroth iterate)", 'choices': [], 'low': 0, 'high': 100,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
-    'convergence-passes']}, {'name': 'zeroth', 'kind': 'choice', 'default': 'geyer', 'doc':
-    "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u "
-    "between the half's ends", 'choices': [{'value': 'geyer', 'doc':
-    "Geyer et al.'s map (section 3.1) with k_c"}, {'value': 'held', 'doc':
-    'the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown'}, {'value':
-    'gravity-type0', 'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with k_c'}, {'value':
-    'gravity-type1', 'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section 4.2) with k_c'}, {
-    'value': 'gravity-type2', 'doc': 'Gravity correction type 2 (average leg length) (section 4.3) with k_c'},
-    {'value': 'gravity-type3', 'doc':
-    'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section 4.4) with k_c'}, {'value': 'gravity-type4',
-    'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) (section 4.5) with k_c'}, {'value':
-    'gravity-type5', 'doc': 'Gravity correction type 5 (time-varying momentum) (section 4.6) with k_c'}, {
-    'value': 'geyer-vs', 'doc':
-    'Simple variable-stiffness map (Geyer et al. per half) (section 5.1) with k_c, k_d'}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': False, 'specialize': True, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'bottom_length', 'kind': 'choice', 'default': 'zeroth', 'doc':
-    'the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates)', 'choices': [{
-    'value': 'zeroth', 'doc': "the zeroth iterate's bottom (with Geyer's map: (154), l0 (1 + a_ab - b_ab))"},
-    {'value': 'eq153', 'doc':
-    "the quartic (153) of a vertical bottom with the touchdown's energy and momentum"}], 'low': None, 'high':
-    None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}], 'module': 'iterative_report', 'summary':
+    'out': _repeated0, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {
+    'module': 'geyer_jacobian', 'name': 'geyer_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo'], 'out':
+    _repeated1, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {}},
+    {'name': 'iterative-report', 'title': 'Iterative stance map (Schwind and Koditschek, as printed)',
+    'section': '3.2', 'equations': ['27', '29', '30', '31', '32', '33', '35', '37', '38', '39', '40', '41',
+    '42', '43', '44', '45', '98', '114', '115', '116', '117', '118', '119', '120', '121', '122', '123', '124',
+    '125', '126', '128', '129', '130', '131', '132', '133', '134', '135', '137', '138', '139', '140', '141',
+    '143', '144', '145', '146', '147', '148', '149', '150', '154'], 'params': ['m', 'l0', 'k_c', 'k_d',
+    'g_s'], 'options': _repeated11, 'module': 'iterative_report', 'summary':
     "the report's iteration: n-th iterate at the end of each half from the zeroth at the n-fold "
     'mean-value point, stepping outward; compression anchored at touchdown (123), decompression at the '
     'bottom (41); bottom leg length of the zeroth iterate', 'roles': ['accuracy-figure'], 'specialized': [
-    'zeroth'], 'choices': {'geyer': '_zeroth_geyer', 'held': '_zeroth_held', 'gravity-type0':
-    '_zeroth_gravity_type0', 'gravity-type1': '_zeroth_gravity_type1', 'gravity-type2':
-    '_zeroth_gravity_type2', 'gravity-type3': '_zeroth_gravity_type3', 'gravity-type4':
-    '_zeroth_gravity_type4', 'gravity-type5': '_zeroth_gravity_type5', 'geyer-vs': '_zeroth_geyer_vs'},
-    'extras': [], 'requires': [], 'as_printed': True, 'approximation_statuses': ['IMAGINARY_MOMENTUM',
-    'LIFTOFF_BACKWARD', 'LIFTOFF_DOWNWARD'], 'kernels': {'stance': {'module': 'iterative_report', 'name':
-    'iterative_report_stance_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
-    'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'base': 'iterative_report_stance'}, 'apex_return': {
-    'module': 'iterative_report', 'name': 'iterative_report_apex_return_zeroth_geyer', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'], 'out': ['apex_height', 'apex_speed',
-    't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd',
-    'step_length', 'foot_x', 'foot_y', 'touchdown_q_th'], 'base': 'iterative_report_apex_return'},
-    'stance_jacobian': {'module': 'iterative_report_jacobian', 'name':
+    'zeroth'], 'choices': _repeated12, 'extras': [], 'requires': [], 'as_printed': True,
+    'approximation_statuses': ['IMAGINARY_MOMENTUM', 'LIFTOFF_BACKWARD', 'LIFTOFF_DOWNWARD'], 'kernels': {
+    'stance': {'module': 'iterative_report', 'name': 'iterative_report_stance_zeroth_geyer', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'variant', 'iterations', 'bottom_length'], 'out': _repeated0, 'base': 'iterative_report_stance'},
+    'apex_return': {'module': 'iterative_report', 'name': 'iterative_report_apex_return_zeroth_geyer', 'x': [
+    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'], 'out': _repeated1, 'base':
+    'iterative_report_apex_return'}, 'stance_jacobian': {'module': 'iterative_report_jacobian', 'name':
     'iterative_report_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': [
     'm', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'],
-    'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd'], 'base': 'iterative_report_stance_jacobian', 'wrt': [
-    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module':
-    'iterative_report_jacobian', 'name': 'iterative_report_apex_return_jacobian_zeroth_geyer', 'x': [
-    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s',
-    'g_f', 'q_r_td', 'q_r_lo', 'variant', 'iterations', 'bottom_length'], 'out': ['apex_height', 'apex_speed',
-    't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd',
-    'step_length', 'foot_x', 'foot_y', 'touchdown_q_th'], 'base': 'iterative_report_apex_return_jacobian',
-    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}, {
-    'name': 'gravity-type0', 'title': 'Gravity correction type 0 (leg length l0)', 'section': '4.1',
-    'equations': ['46', '47', '48', '49', '50', '51'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name':
-    'reading', 'kind': 'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)",
-    'choices': [{'value': 'mean', 'doc':
-    'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
-    'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
-    "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-readings']}, {'name': 'samples', 'kind': 'int', 'default': 2, 'doc':
-    'number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom)', 'choices': [], 'low': 2,
-    'high': 3, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 1, 'doc':
+    'out': _repeated0, 'base': 'iterative_report_stance_jacobian', 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module': 'iterative_report_jacobian', 'name':
+    'iterative_report_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'variant',
+    'iterations', 'bottom_length'], 'out': _repeated1, 'base': 'iterative_report_apex_return_jacobian', 'wrt':
+    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}, {'name':
+    'gravity-type0', 'title': 'Gravity correction type 0 (leg length l0)', 'section': '4.1', 'equations': [
+    '46', '47', '48', '49', '50', '51'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15,
+    _repeated16, {'name': 'iterations', 'kind': 'int', 'default': 1, 'doc':
     "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes']},
     {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
@@ -171,231 +289,37 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'tolerance']}], 'module': 'gravity', 'summary':
     'P_c from the torque at l0 sampled at touchdown and liftoff (49) or also the bottom (51)', 'roles': [
-    'yu-target'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
-    'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
-    'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
-    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
-    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
-    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
-    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
-    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
-    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
-    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
-    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 0.0,
+    'yu-target'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': ['constant_stiffness'],
+    'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed': {'rule': 0.0,
     'leg_length': 0.0, 'interval': 1.0}}, {'name': 'gravity-type1', 'title':
     'Gravity correction type 1 (leg length (l0 + q_r_b)/2)', 'section': '4.2', 'equations': ['46', '47', '48',
-    '50', '52', '53', '54'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading', 'kind':
-    'choice', 'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value':
-    'mean', 'doc':
-    'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
-    'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
-    "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-readings']}, {'name': 'samples', 'kind': 'int', 'default': 2, 'doc':
-    'number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom)', 'choices': [], 'low': 2,
-    'high': 3, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
-    "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes']},
-    {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity', 'summary':
+    '50', '52', '53', '54'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated16,
+    _repeated27, _repeated28], 'module': 'gravity', 'summary':
     'P_c from the torque at the mean of the rest and bottom leg lengths (52), (54)', 'roles': ['yu-target'],
-    'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
-    'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
-    'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
-    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
-    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
-    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
-    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
-    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
-    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
-    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
-    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 1.0,
-    'leg_length': 0.0, 'interval': 1.0}}, {'name': 'gravity-type2', 'title':
-    'Gravity correction type 2 (average leg length)', 'section': '4.3', 'equations': ['46', '47', '48', '50',
-    '55', '56', '57', '58', '59', '60', '61', '62', '63', '64'], 'params': ['m', 'l0', 'k', 'g_s'], 'options':
-    [{'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc':
-    "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value': 'mean', 'doc':
-    'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
-    'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
-    "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-readings']}, {'name': 'samples', 'kind': 'int', 'default': 2, 'doc':
-    'number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom)', 'choices': [], 'low': 2,
-    'high': 3, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'leg_length', 'kind': 'choice', 'default': 'eq11', 'doc':
-    'the stance solution the average leg length is taken from', 'choices': [{'value': 'eq11', 'doc':
-    '(11), eqs (55)-(57) and (67)-(68) (their printed forms lack an l0 on the b term)'}, {'value': 'eq21',
-    'doc': '(21), eqs (58)-(59) and (70)-(72); touchdown at l0 only'}, {'value': 'eq23', 'doc':
-    '(23), eqs (60)-(61) and (73)-(75); touchdown at l0 only'}], 'low': None, 'high': None, 'at_rest_length':
-    ['eq21', 'eq23'], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants']}, {
-    'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
-    "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes']},
-    {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity', 'summary':
+    'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': ['constant_stiffness'], 'as_printed':
+    False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed': {'rule': 1.0, 'leg_length': 0.0,
+    'interval': 1.0}}, {'name': 'gravity-type2', 'title': 'Gravity correction type 2 (average leg length)',
+    'section': '4.3', 'equations': ['46', '47', '48', '50', '55', '56', '57', '58', '59', '60', '61', '62',
+    '63', '64'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated16, _repeated30,
+    _repeated27, _repeated28], 'module': 'gravity', 'summary':
     'P_c from the torque at the stance-average leg length (62), (64)', 'roles': ['yu-target',
-    'accuracy-figure'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
-    'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
-    'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
-    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
-    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
-    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
-    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
-    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
-    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
-    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
-    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 2.0,
-    'interval': 1.0}}, {'name': 'gravity-type3', 'title':
+    'accuracy-figure'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': [
+    'constant_stiffness'], 'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed':
+    {'rule': 2.0, 'interval': 1.0}}, {'name': 'gravity-type3', 'title':
     'Gravity correction type 3 (trapezoid on [t_i, t_f])', 'section': '4.4', 'equations': ['46', '47', '48',
-    '50', '65', '66'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'reading', 'kind': 'choice',
-    'default': 'mean', 'doc': "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value': 'mean', 'doc':
-    'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
-    'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
-    "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-readings']}, {'name': 'interval', 'kind': 'choice', 'default': 'halves', 'doc':
-    'the intervals [t_i, t_f] of the correction', 'choices': [{'value': 'stance', 'doc':
-    'one interval, touchdown to liftoff'}, {'value': 'halves', 'doc':
-    "touchdown to bottom and bottom to liftoff, summed (the report's suggestion for the split maps of "
-    'section 5)' }], 'low': None, 'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False,
-    'backends': {}, 'roles': ['accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 100,
-    'doc': "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes']},
-    {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity', 'summary':
+    '50', '65', '66'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated33, _repeated27,
+    _repeated28], 'module': 'gravity', 'summary':
     'P_c by the trapezoid rule on the torque with the true leg lengths (65), whole stance or halves', 'roles':
-    ['yu-target'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
-    'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
-    'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
-    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
-    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
-    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
-    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
-    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
-    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
-    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
-    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 3.0,
-    'samples': 2.0, 'leg_length': 0.0}}, {'name': 'gravity-type4', 'title':
+    ['yu-target'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': [
+    'constant_stiffness'], 'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed':
+    {'rule': 3.0, 'samples': 2.0, 'leg_length': 0.0}}, {'name': 'gravity-type4', 'title':
     'Gravity correction type 4 (average leg length on [t_i, t_f])', 'section': '4.5', 'equations': ['46',
     '47', '48', '50', '67', '68', '69', '70', '71', '72', '73', '74', '75', '76', '77'], 'params': ['m', 'l0',
-    'k', 'g_s'], 'options': [{'name': 'reading', 'kind': 'choice', 'default': 'mean', 'doc':
-    "how P_c enters Geyer's formulas, eq (50)", 'choices': [{'value': 'mean', 'doc':
-    'trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), rates from the '
-    'momentum at that instant, liftoff radial speed from the exact energy (27)' }, {'value': 'report', 'doc':
-    "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-readings']}, {'name': 'interval', 'kind': 'choice', 'default': 'halves', 'doc':
-    'the intervals [t_i, t_f] of the correction', 'choices': [{'value': 'stance', 'doc':
-    'one interval, touchdown to liftoff'}, {'value': 'halves', 'doc':
-    "touchdown to bottom and bottom to liftoff, summed (the report's suggestion for the split maps of "
-    'section 5)' }], 'low': None, 'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False,
-    'backends': {}, 'roles': ['accuracy-variants']}, {'name': 'leg_length', 'kind': 'choice', 'default':
-    'eq11', 'doc': 'the stance solution the average leg length is taken from', 'choices': [{'value': 'eq11',
-    'doc': '(11), eqs (55)-(57) and (67)-(68) (their printed forms lack an l0 on the b term)'}, {'value':
-    'eq21', 'doc': '(21), eqs (58)-(59) and (70)-(72); touchdown at l0 only'}, {'value': 'eq23', 'doc':
-    '(23), eqs (60)-(61) and (73)-(75); touchdown at l0 only'}], 'low': None, 'high': None, 'at_rest_length':
-    ['eq21', 'eq23'], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants']}, {
-    'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
-    "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes']},
-    {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'gravity', 'summary':
+    'k', 'g_s'], 'options': [_repeated15, _repeated33, _repeated30, _repeated27, _repeated28], 'module':
+    'gravity', 'summary':
     'P_c from the torque at the average leg length of each interval (76), whole stance or halves', 'roles': [
-    'yu-target'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c', 'doc':
-    'virtual gravity effect: the stance impulse added to p_th', 'unit': 'N m s', 'odd': True}, {'name':
-    'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
-    'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity',
-    'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'],
-    'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length',
-    'rule', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {'module': 'gravity', 'name': 'gravity_state_at', 'x': [
-    't', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['q_r', 'q_rd',
-    'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian',
-    'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td',
-    'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x':
-    ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'rule', 'iterations', 'tol'], 'out': [
-    'apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'],
-    'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'rule': 4.0,
+    'yu-target'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': ['constant_stiffness'],
+    'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed': {'rule': 4.0,
     'samples': 2.0}}, {'name': 'gravity-type5', 'title': 'Gravity correction type 5 (time-varying momentum)',
     'section': '4.6', 'equations': ['46', '47', '48'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name':
     'iterations', 'kind': 'int', 'default': 100, 'doc': "fixed-point passes T5.8 from Geyer's map", 'choices':
@@ -411,26 +335,19 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity_type5',
     'name': 'gravity_type5_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r',
-    'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'P_c', 'passes']}, 'apex_return': {'module': 'gravity_type5', 'name':
-    'gravity_type5_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p':
-    ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['apex_height',
-    'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes']}, 'state_at': {
-    'module': 'gravity_type5', 'name': 'gravity_type5_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['q_r',
-    'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'gravity_type5_jacobian', 'name':
-    'gravity_type5_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r',
-    'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd', 'P_c', 'passes'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']},
-    'apex_return_jacobian': {'module': 'gravity_type5_jacobian', 'name': 'gravity_type5_apex_return_jacobian',
-    'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s',
-    'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
-    't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
-    'foot_x', 'foot_y', 'touchdown_q_th', 'P_c', 'passes'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground', 'retraction_rate', 'k']}}, 'fixed': {}}, {'name': 'geyer-vs', 'title':
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': _repeated19}, 'apex_return': {'module':
+    'gravity_type5', 'name': 'gravity_type5_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out':
+    _repeated21}, 'state_at': {'module': 'gravity_type5', 'name': 'gravity_type5_state_at', 'x': ['t',
+    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
+    'gravity_type5_jacobian', 'name': 'gravity_type5_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
+    'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out':
+    _repeated19, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module':
+    'gravity_type5_jacobian', 'name': 'gravity_type5_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'iterations', 'tol'], 'out': _repeated21, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate', 'k']}}, 'fixed': {}}, {'name': 'geyer-vs', 'title':
     'Simple variable-stiffness map (Geyer et al. per half)', 'section': '5.1', 'equations': ['78', '79', '80',
     '81', '82', '83', '84', '85', '86', '87', '88', '89', '90', '91', '92', '93', '94', '96', '97', '98',
     '99', '100', '101', '102', '103', '104', '105', '106', '107', '108', '109', '110', '111', '112', '113'],
@@ -452,10 +369,7 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'accuracy-variants', 'stiffness-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
     "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'geyer_vs', 'summary':
+    'convergence-passes']}, _repeated28], 'module': 'geyer_vs', 'summary':
     "Geyer et al.'s map with k_c to the bottom, the energy jump (97)-(98), again with k_d to liftoff; "
     'optionally a gravity correction per half', 'roles': ['default'], 'specialized': [], 'choices': {},
     'extras': [{'name': 'P_c_compression', 'doc':
@@ -464,108 +378,64 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'name': 'passes', 'doc': 'fixed-point passes run (0 unless gravity)', 'unit': '', 'odd': False}],
     'requires': [], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':
     'geyer_vs', 'name': 'geyer_vs_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c_compression', 'P_c_decompression', 'passes']},
-    'apex_return': {'module': 'geyer_vs', 'name': 'geyer_vs_apex_return', 'x': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'continuity', 'gravity', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
-    't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
-    'foot_x', 'foot_y', 'touchdown_q_th', 'P_c_compression', 'P_c_decompression', 'passes']}, 'state_at': {
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out':
+    _repeated34}, 'apex_return': {'module': 'geyer_vs', 'name': 'geyer_vs_apex_return', 'x': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': _repeated35}, 'state_at': {
     'module': 'geyer_vs', 'name': 'geyer_vs_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'],
     'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations',
     'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'geyer_vs_jacobian',
     'name': 'geyer_vs_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': [
-    't_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r',
-    'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c_compression', 'P_c_decompression', 'passes'], 'wrt':
-    ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module':
-    'geyer_vs_jacobian', 'name': 'geyer_vs_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'continuity', 'gravity', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent',
-    't_stance', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length',
-    'foot_x', 'foot_y', 'touchdown_q_th', 'P_c_compression', 'P_c_decompression', 'passes'], 'wrt': [
-    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}, {'name':
-    'iterative', 'title': 'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2',
-    'equations': ['27', '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118',
-    '137'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name': 'nodes', 'kind': 'choice',
-    'default': '4', 'doc':
-    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))", 'choices': [{
-    'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc': '3 nodes'}, {
-    'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}], 'low': None, 'high': None,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
-    'Picard passes per half-stance (0 = the zeroth iterate)', 'choices': [], 'low': 0, 'high': 100,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
-    'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
-    'stop when no node value moves by more than tol (relative; 0 = run every pass)', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}, {'name': 'zeroth', 'kind': 'choice', 'default': 'geyer', 'doc':
-    "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u "
-    "between the half's ends", 'choices': [{'value': 'geyer', 'doc':
-    "Geyer et al.'s map (section 3.1) with k_c"}, {'value': 'held', 'doc':
-    'the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown'}, {'value':
-    'gravity-type0', 'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with k_c'}, {'value':
-    'gravity-type1', 'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section 4.2) with k_c'}, {
-    'value': 'gravity-type2', 'doc': 'Gravity correction type 2 (average leg length) (section 4.3) with k_c'},
-    {'value': 'gravity-type3', 'doc':
-    'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section 4.4) with k_c'}, {'value': 'gravity-type4',
-    'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) (section 4.5) with k_c'}, {'value':
-    'gravity-type5', 'doc': 'Gravity correction type 5 (time-varying momentum) (section 4.6) with k_c'}, {
-    'value': 'geyer-vs', 'doc':
-    'Simple variable-stiffness map (Geyer et al. per half) (section 5.1) with k_c, k_d'}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': False, 'specialize': True, 'backends': {}, 'roles': [
-    'accuracy-variants']}], 'module': 'iterative', 'summary':
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out':
+    _repeated34, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {
+    'module': 'geyer_vs_jacobian', 'name': 'geyer_vs_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'continuity', 'gravity', 'iterations', 'tol'], 'out': _repeated35, 'wrt': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}, {'name': 'iterative', 'title':
+    'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2', 'equations': ['27',
+    '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118', '137'], 'params': ['m',
+    'l0', 'k_c', 'k_d', 'g_s'], 'options': _repeated40, 'module': 'iterative', 'summary':
     'both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the radial work; '
     'k_c before the bottom, k_d after', 'roles': ['region', 'accuracy-figure'], 'specialized': ['zeroth'],
-    'choices': {'geyer': '_zeroth_geyer', 'held': '_zeroth_held', 'gravity-type0': '_zeroth_gravity_type0',
-    'gravity-type1': '_zeroth_gravity_type1', 'gravity-type2': '_zeroth_gravity_type2', 'gravity-type3':
-    '_zeroth_gravity_type3', 'gravity-type4': '_zeroth_gravity_type4', 'gravity-type5':
-    '_zeroth_gravity_type5', 'geyer-vs': '_zeroth_geyer_vs'}, 'extras': [{'name': 'passes', 'doc':
+    'choices': _repeated12, 'extras': [{'name': 'passes', 'doc':
     'Picard passes run (the larger of the two halves)', 'unit': '1', 'odd': False}], 'requires': [],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'iterative', 'name':
     'iterative_stance_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd', 'passes'], 'base': 'iterative_stance'}, 'apex_return': {'module':
-    'iterative', 'name': 'iterative_apex_return_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
-    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'passes'], 'base': 'iterative_apex_return'}, 'stance_jacobian': {'module':
-    'iterative_jacobian', 'name': 'iterative_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
-    'iterations', 'tol'], 'out': ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th',
-    'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'passes'], 'base':
-    'iterative_stance_jacobian', 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated41, 'base':
+    'iterative_stance'}, 'apex_return': {'module': 'iterative', 'name': 'iterative_apex_return_zeroth_geyer',
+    'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d',
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated42, 'base':
+    'iterative_apex_return'}, 'stance_jacobian': {'module': 'iterative_jacobian', 'name':
+    'iterative_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
+    'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated41,
+    'base': 'iterative_stance_jacobian', 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
     'apex_return_jacobian': {'module': 'iterative_jacobian', 'name':
     'iterative_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
     'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
-    'iterations', 'tol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y',
-    'touchdown_q_th', 'passes'], 'base': 'iterative_apex_return_jacobian', 'wrt': ['b_y_apex', 'b_xd_apex',
-    'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}]
+    'iterations', 'tol'], 'out': _repeated42, 'base': 'iterative_apex_return_jacobian', 'wrt': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}]
+
+_repeated43 = {'name': 'rtol', 'kind': 'float', 'default': 1e-11, 'doc':
+    'relative tolerance of the DOP853 integration', 'choices': [], 'low': 1e-14, 'high': 0.001,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
+
+_repeated44 = {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
+    'absolute tolerance of the DOP853 integration', 'choices': [], 'low': 1e-16, 'high': 0.001,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
+
+_repeated45 = [_repeated43, _repeated44]
 
 HALVES = [{'name': 'exact-compression', 'title':
     'Exact compression half (touchdown to bottom, k_c; DOP853 integration)', 'section': '2.2', 'equations': [
-    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo'], 'options': [{'name': 'rtol', 'kind': 'float',
-    'default': 1e-11, 'doc': 'relative tolerance of the DOP853 integration', 'choices': [], 'low': 1e-14,
-    'high': 0.001, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}, {
-    'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc': 'absolute tolerance of the DOP853 integration',
-    'choices': [], 'low': 1e-16, 'high': 0.001, 'at_rest_length': [], 'kernel': True, 'specialize': False,
-    'backends': {}, 'roles': []}], 'module': 'exact_compression', 'summary':
+    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo'], 'options': _repeated45, 'module':
+    'exact_compression', 'summary':
     "the exact stance's compression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'touchdown', 'end': 'bottom',
     'requires': [], 'kernels': {'half': {'module': 'exact_compression', 'name': 'exact_compression', 'x': [
     'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo', 'rtol', 'atol'],
     'out': ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd']}}}, {'name': 'exact-decompression',
     'title': 'Exact decompression half (bottom to liftoff, k_d; DOP853 integration)', 'section': '2.2',
-    'equations': ['2', '3'], 'params': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [{'name': 'rtol',
-    'kind': 'float', 'default': 1e-11, 'doc': 'relative tolerance of the DOP853 integration', 'choices': [],
-    'low': 1e-14, 'high': 0.001, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {},
-    'roles': []}, {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'absolute tolerance of the DOP853 integration', 'choices': [], 'low': 1e-16, 'high': 0.001,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}], 'module':
+    'equations': ['2', '3'], 'params': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': _repeated45, 'module':
     'exact_decompression', 'summary':
     "the exact stance's decompression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'bottom', 'end': 'liftoff',
@@ -577,103 +447,30 @@ HALVES = [{'name': 'exact-compression', 'title':
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']}}}, {'name': 'iterative-compression',
     'title': 'Iterative compression half (touchdown to bottom, k_c; converging form)', 'section': '5.2.1',
     'equations': ['29', '30', '31', '32', '114', '115', '116', '117', '118', '123'], 'params': ['m', 'l0',
-    'k_c', 'g_s'], 'options': [{'name': 'nodes', 'kind': 'choice', 'default': '4', 'doc':
-    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))", 'choices': [{
-    'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc': '3 nodes'}, {
-    'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}], 'low': None, 'high': None,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
-    'Picard passes per half-stance (0 = the zeroth iterate)', 'choices': [], 'low': 0, 'high': 100,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
-    'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
-    'stop when no node value moves by more than tol (relative; 0 = run every pass)', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}, {'name': 'zeroth', 'kind': 'choice', 'default': 'geyer', 'doc':
-    "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in "
-    "u between the half's ends", 'choices': [{'value': 'geyer', 'doc':
-    "Geyer et al.'s map (section 3.1) with k_c"}, {'value': 'held', 'doc':
-    'the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown'}, {'value':
-    'gravity-type0', 'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with k_c'}, {'value':
-    'gravity-type1', 'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section 4.2) with k_c'}, {
-    'value': 'gravity-type2', 'doc': 'Gravity correction type 2 (average leg length) (section 4.3) with k_c'},
-    {'value': 'gravity-type3', 'doc':
-    'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section 4.4) with k_c'}, {'value': 'gravity-type4',
-    'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) (section 4.5) with k_c'}, {'value':
-    'gravity-type5', 'doc': 'Gravity correction type 5 (time-varying momentum) (section 4.6) with k_c'}, {
-    'value': 'geyer-vs', 'doc':
-    'Simple variable-stiffness map (Geyer et al. per half) (section 5.1) with k_c, k_d'}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': False, 'specialize': True, 'backends': {}, 'roles': [
-    'accuracy-variants']}], 'module': 'iterative_compression', 'summary':
+    'k_c', 'g_s'], 'options': _repeated40, 'module': 'iterative_compression', 'summary':
     'the compression half of `iterative`: bottom leg length from the radial work, Picard passes on '
-    'Gauss nodes in u', 'roles': [], 'specialized': ['zeroth'], 'choices': {'geyer': '_zeroth_geyer', 'held':
-    '_zeroth_held', 'gravity-type0': '_zeroth_gravity_type0', 'gravity-type1': '_zeroth_gravity_type1',
-    'gravity-type2': '_zeroth_gravity_type2', 'gravity-type3': '_zeroth_gravity_type3', 'gravity-type4':
-    '_zeroth_gravity_type4', 'gravity-type5': '_zeroth_gravity_type5', 'geyer-vs': '_zeroth_geyer_vs'},
-    'extras': [{'name': 'passes', 'doc': 'Picard passes run', 'unit': '1', 'odd': False}], 'whole':
-    'iterative', 'start': 'touchdown', 'end': 'bottom', 'requires': [], 'kernels': {'half': {'module':
-    'iterative_compression', 'name': 'iterative_compression_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'g_s', 'nodes', 'iterations', 'tol'], 'out': ['t_half',
-    'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd', 'passes'], 'base': 'iterative_compression'}}}, {'name':
+    'Gauss nodes in u', 'roles': [], 'specialized': ['zeroth'], 'choices': _repeated12, 'extras': [{'name':
+    'passes', 'doc': 'Picard passes run', 'unit': '1', 'odd': False}], 'whole': 'iterative', 'start':
+    'touchdown', 'end': 'bottom', 'requires': [], 'kernels': {'half': {'module': 'iterative_compression',
+    'name': 'iterative_compression_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': [
+    'm', 'l0', 'k_c', 'g_s', 'nodes', 'iterations', 'tol'], 'out': ['t_half', 'end_q_r', 'end_q_rd',
+    'end_q_th', 'end_q_thd', 'passes'], 'base': 'iterative_compression'}}}, {'name':
     'iterative-report-compression', 'title':
     'Iterative compression half as printed (touchdown to bottom, k_c)', 'section': '5.2.1', 'equations': [
     '114', '115', '116', '117', '118', '119', '120', '121', '122', '123', '124', '125', '126', '128', '129',
-    '130', '131', '132', '133', '134', '135', '154'], 'params': ['m', 'l0', 'k_c', 'g_s'], 'options': [{
-    'name': 'variant', 'kind': 'choice', 'default': 'integrand', 'doc':
-    'which mean-value form each step uses', 'choices': [{'value': 'integrand', 'doc':
-    'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, {'value': 'factor', 'doc':
-    'only 1/H^{-1} at the point, the weights 1/sigma^2 and sigma integrated exactly: (133)-(135), '
-    '(148)-(150), with (134)/(149) keeping p_th' }], 'low': None, 'high': None, 'at_rest_length': [],
-    'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants',
-    'convergence-series']}, {'name': 'iterations', 'kind': 'int', 'default': 1, 'doc':
-    "iterations n of each half's chain (0 = the zeroth iterate)", 'choices': [], 'low': 0, 'high': 100,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
-    'convergence-passes']}, {'name': 'zeroth', 'kind': 'choice', 'default': 'geyer', 'doc':
-    "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in "
-    "u between the half's ends", 'choices': [{'value': 'geyer', 'doc':
-    "Geyer et al.'s map (section 3.1) with k_c"}, {'value': 'held', 'doc':
-    'the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown'}, {'value':
-    'gravity-type0', 'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with k_c'}, {'value':
-    'gravity-type1', 'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section 4.2) with k_c'}, {
-    'value': 'gravity-type2', 'doc': 'Gravity correction type 2 (average leg length) (section 4.3) with k_c'},
-    {'value': 'gravity-type3', 'doc':
-    'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section 4.4) with k_c'}, {'value': 'gravity-type4',
-    'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) (section 4.5) with k_c'}, {'value':
-    'gravity-type5', 'doc': 'Gravity correction type 5 (time-varying momentum) (section 4.6) with k_c'}, {
-    'value': 'geyer-vs', 'doc':
-    'Simple variable-stiffness map (Geyer et al. per half) (section 5.1) with k_c, k_d'}], 'low': None,
-    'high': None, 'at_rest_length': [], 'kernel': False, 'specialize': True, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'bottom_length', 'kind': 'choice', 'default': 'zeroth', 'doc':
-    'the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates)', 'choices': [{
-    'value': 'zeroth', 'doc': "the zeroth iterate's bottom (with Geyer's map: (154), l0 (1 + a_ab - b_ab))"},
-    {'value': 'eq153', 'doc':
-    "the quartic (153) of a vertical bottom with the touchdown's energy and momentum"}], 'low': None, 'high':
-    None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}], 'module': 'iterative_report_compression', 'summary':
+    '130', '131', '132', '133', '134', '135', '154'], 'params': ['m', 'l0', 'k_c', 'g_s'], 'options':
+    _repeated11, 'module': 'iterative_report_compression', 'summary':
     'the compression half of `iterative-report`: the chain anchored at touchdown, the printed point '
-    '(123), bottom leg length of the zeroth iterate', 'roles': [], 'specialized': ['zeroth'], 'choices': {
-    'geyer': '_zeroth_geyer', 'held': '_zeroth_held', 'gravity-type0': '_zeroth_gravity_type0',
-    'gravity-type1': '_zeroth_gravity_type1', 'gravity-type2': '_zeroth_gravity_type2', 'gravity-type3':
-    '_zeroth_gravity_type3', 'gravity-type4': '_zeroth_gravity_type4', 'gravity-type5':
-    '_zeroth_gravity_type5', 'geyer-vs': '_zeroth_geyer_vs'}, 'extras': [], 'whole': 'iterative-report',
-    'start': 'touchdown', 'end': 'bottom', 'requires': [], 'kernels': {'half': {'module':
-    'iterative_report_compression', 'name': 'iterative_report_compression_zeroth_geyer', 'x': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'g_s', 'variant', 'iterations',
-    'bottom_length'], 'out': ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd'], 'base':
-    'iterative_report_compression'}}}, {'name': 'iterative-decompression', 'title':
-    'Iterative decompression half (bottom to liftoff, k_d; converging form)', 'section': '5.2.2', 'equations':
-    ['29', '30', '31', '32', '37', '41', '137', '138', '139', '140', '141', '143'], 'params': ['m', 'l0',
-    'k_d', 'g_s', 'q_r_lo'], 'options': [{'name': 'nodes', 'kind': 'choice', 'default': '4', 'doc':
-    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))", 'choices': [{
-    'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc': '3 nodes'}, {
-    'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}], 'low': None, 'high': None,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
-    'Picard passes per half-stance (0 = the zeroth iterate)', 'choices': [], 'low': 0, 'high': 100,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
-    'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
-    'stop when no node value moves by more than tol (relative; 0 = run every pass)', 'choices': [], 'low':
-    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'tolerance']}], 'module': 'iterative_decompression', 'summary':
+    '(123), bottom leg length of the zeroth iterate', 'roles': [], 'specialized': ['zeroth'], 'choices':
+    _repeated12, 'extras': [], 'whole': 'iterative-report', 'start': 'touchdown', 'end': 'bottom', 'requires':
+    [], 'kernels': {'half': {'module': 'iterative_report_compression', 'name':
+    'iterative_report_compression_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
+    'l0', 'k_c', 'g_s', 'variant', 'iterations', 'bottom_length'], 'out': ['t_half', 'end_q_r', 'end_q_rd',
+    'end_q_th', 'end_q_thd'], 'base': 'iterative_report_compression'}}}, {'name': 'iterative-decompression',
+    'title': 'Iterative decompression half (bottom to liftoff, k_d; converging form)', 'section': '5.2.2',
+    'equations': ['29', '30', '31', '32', '37', '41', '137', '138', '139', '140', '141', '143'], 'params': [
+    'm', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [_repeated37, _repeated38, _repeated39], 'module':
+    'iterative_decompression', 'summary':
     "the decompression half of `iterative` from any bottom state: zeroth iterate the bottom's angle "
     'and angular momentum held, liftoff p_r from the radial work', 'roles': [], 'specialized': [], 'choices':
     {}, 'extras': [{'name': 'passes', 'doc': 'Picard passes run', 'unit': '1', 'odd': False}], 'whole':
@@ -687,16 +484,8 @@ HALVES = [{'name': 'exact-compression', 'title':
     'iterative-report-decompression', 'title':
     'Iterative decompression half as printed (bottom to liftoff, k_d)', 'section': '5.2.2', 'equations': [
     '137', '138', '139', '140', '141', '143', '144', '145', '146', '147', '148', '149', '150'], 'params': [
-    'm', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [{'name': 'variant', 'kind': 'choice', 'default':
-    'integrand', 'doc': 'which mean-value form each step uses', 'choices': [{'value': 'integrand', 'doc':
-    'the whole integrand at the point: (42)-(44), (124)-(126), (139)-(141)'}, {'value': 'factor', 'doc':
-    'only 1/H^{-1} at the point, the weights 1/sigma^2 and sigma integrated exactly: (133)-(135), '
-    '(148)-(150), with (134)/(149) keeping p_th' }], 'low': None, 'high': None, 'at_rest_length': [],
-    'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants',
-    'convergence-series']}, {'name': 'iterations', 'kind': 'int', 'default': 1, 'doc':
-    "iterations n of each half's chain (0 = the zeroth iterate)", 'choices': [], 'low': 0, 'high': 100,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
-    'convergence-passes']}], 'module': 'iterative_report_decompression', 'summary':
+    'm', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [_repeated4, _repeated5], 'module':
+    'iterative_report_decompression', 'summary':
     "the decompression half of `iterative-report` from any bottom state: E_ba the bottom state's "
     "energy with k_d, zeroth iterate the bottom's angle and angular momentum held", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'iterative-report', 'start': 'bottom', 'end':
@@ -714,36 +503,25 @@ EXACT = {'name': 'exact', 'title': 'Exact stance by numerical integration (DOP85
     'which DOP853 implementation integrates the stance (same algorithm, events and statuses)', 'choices': [{
     'value': 'compiled', 'doc': 'numba-compiled, batches in parallel'}, {'value': 'scipy', 'doc':
     "scipy's solve_ivp, the reference"}], 'low': None, 'high': None, 'at_rest_length': [], 'kernel': False,
-    'specialize': False, 'backends': {'scipy': 'slipmaps.runtime.exact.reference'}, 'roles': []}, {'name':
-    'rtol', 'kind': 'float', 'default': 1e-11, 'doc': 'relative tolerance of the DOP853 integration',
-    'choices': [], 'low': 1e-14, 'high': 0.001, 'at_rest_length': [], 'kernel': True, 'specialize': False,
-    'backends': {}, 'roles': []}, {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
-    'absolute tolerance of the DOP853 integration', 'choices': [], 'low': 1e-16, 'high': 0.001,
-    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}], 'module':
-    'exact', 'summary':
+    'specialize': False, 'backends': {'scipy': 'slipmaps.runtime.exact.reference'}, 'roles': []}, _repeated43,
+    _repeated44], 'module': 'exact', 'summary':
     'the polar stance equations of motion (2)-(3) integrated with events for the bottom (k_c -> k_d), '
     'liftoff and failures: the ground truth', 'roles': [], 'specialized': [], 'choices': {}, 'extras': [],
     'requires': [], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':
     'exact', 'name': 'exact_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['t_bottom', 't_stance',
-    'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
-    'liftoff_q_thd']}, 'apex_return': {'module': 'exact', 'name': 'exact_apex_return', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
-    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'touchdown_q_th']}, 'state_at': {'module': 'exact', 'name': 'exact_state_at', 'x': ['t',
-    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td',
-    'q_r_lo', 'rtol', 'atol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
-    'exact_jacobian', 'name': 'exact_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p':
-    ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['t_bottom',
-    't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd', 'liftoff_q_r', 'liftoff_q_rd',
-    'liftoff_q_th', 'liftoff_q_thd'], 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
-    'apex_return_jacobian': {'module': 'exact_jacobian', 'name': 'exact_apex_return_jacobian', 'x': [
-    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s',
-    'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': ['apex_height', 'apex_speed', 't_descent', 't_stance',
-    't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x',
-    'foot_y', 'touchdown_q_th'], 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate',
-    'k_c', 'k_d']}}, 'fixed': {}}
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': _repeated0}, 'apex_return': {
+    'module': 'exact', 'name': 'exact_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'],
+    'out': _repeated1}, 'state_at': {'module': 'exact', 'name': 'exact_state_at', 'x': ['t', 'q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
+    'rtol', 'atol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'exact_jacobian',
+    'name': 'exact_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': _repeated0, 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module': 'exact_jacobian',
+    'name': 'exact_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'],
+    'out': _repeated1, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c',
+    'k_d']}}, 'fixed': {}}
 
 MODEL = {'apex_to_touchdown': {'module': 'model', 'name': 'apex_to_touchdown_entry', 'x': ['b_y_apex',
     'b_xd_apex', 'q_th_td', 'q_r_td', 'g_f', 'ground', 'retraction_rate'], 'p': [], 'out': ['touchdown_q_r',

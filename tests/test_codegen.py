@@ -419,6 +419,46 @@ def test_dense_reads_back_within_the_limit(value, first):
     assert all(len(ln) <= LIMIT for ln in lines[1:])
 
 
+@given(
+    tables=st.dictionaries(st.from_regex(r"[A-Z]{1,6}", fullmatch=True), _PLAIN, max_size=5),
+    least=st.integers(1, 40),
+)
+def test_intern_repeats_reads_back_as_the_tables(tables, least):
+    """derive/wrap.py's intern_repeats(): the tables rendered with every repeated list or dict written
+    once execute back to the same tables; each constant is defined before its first use and named
+    at least twice besides; a value repeated with ``least`` characters or more gets a constant or
+    is a table the others name."""
+    from slipmaps.derive.wrap import dense, intern_repeats
+
+    out = intern_repeats(tables, least=least)
+    assert [n for n, _ in out if not n.startswith("_repeated")] == list(tables)
+    source = "\n".join(f"{n} = {dense(v, first=len(n) + 3)}" for n, v in out)
+    namespace: dict = {}
+    exec(source, namespace)  # NameError unless every constant is defined before its use
+    assert {n: namespace[n] for n in tables} == tables
+    constants = [n for n, _ in out if n.startswith("_repeated")]
+    for n in constants:
+        assert len(re.findall(rf"\b{n}\b", source)) >= 3, n
+    reprs = [r for v in tables.values() for r in _nested_reprs(v)]
+    repeated = {r for r in reprs if reprs.count(r) > 1 and len(r) >= least}
+    if repeated:
+        assert constants or any(repr(v) in repeated for v in tables.values())
+
+
+def _nested_reprs(value):
+    if isinstance(value, (list, dict)):
+        yield repr(value)
+        for child in value.values() if isinstance(value, dict) else value:
+            yield from _nested_reprs(child)
+
+
+def test_index_writes_a_family_s_kernels_once():
+    """The gravity family's members share their kernels dict: one object in the index."""
+    rows = [r for r in MAPS if r["name"].startswith("gravity-type") and r["fixed"]]
+    assert len(rows) == 5
+    assert all(r["kernels"] is rows[0]["kernels"] for r in rows)
+
+
 def test_docs_table_header(built):
     for rel in ("docs/equations.md", "docs/maps.md"):
         first = built[rel].splitlines()[0]
