@@ -171,6 +171,8 @@ class MapSpec(Declaration):
         return self.choices()[0] if choice is None else choice
 
     def _stance_kernel(self) -> Kernel:
+        if self.family is not None:  # a member runs its family's kernels
+            return self.family._stance_kernel()
         if "stance" in self._cache:
             return self._cache["stance"]
         self._cache["stance"] = Kernel(
@@ -209,6 +211,8 @@ class MapSpec(Declaration):
         return Call(self.owner.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
 
     def state_at_kernel(self, choice: dict | None = None) -> Kernel | None:
+        if self.family is not None:
+            return self.family.state_at_kernel(choice)
         if self.built().state_at is None:
             return None
         t = catalog.TIME
@@ -231,6 +235,8 @@ class MapSpec(Declaration):
         """Apex -> touchdown (exact ballistic descent onto ground ``ground`` higher) -> this map's
         stance -> liftoff -> next apex (exact ballistic ascent), and the step's geometry. The apex
         speed is signed: the step's direction (its sign) is the one the liftoff must keep."""
+        if self.family is not None:
+            return self.family.apex_return_kernel(flight_kernels, choice)
         to_td, to_apex = flight_kernels["apex_to_touchdown"], flight_kernels["liftoff_to_apex"]
         stance = self._stance_kernel()
         td = ("td_q_r", "td_q_rd", "td_q_th", "td_q_thd")
@@ -323,6 +329,8 @@ class MapSpec(Declaration):
         ``<ident>_jacobian``; the kernels they call land in ``diff.kernels`` too. The stance one is
         built first, so that the apex-return kernel's call of the stance reuses it (a superset of the
         arguments active there: the touchdown leg length is not)."""
+        if self.family is not None:
+            return self.family.jacobian_kernels(diff, flight_kernels)
         for choice in self.choices():
             suffix = self._suffix(choice)
             diff.jacobian(
@@ -349,6 +357,8 @@ class MapSpec(Declaration):
     def kernels(self, flight_kernels: Mapping[str, Kernel]) -> tuple[Kernel, ...]:
         """Per choice of the specialized options: the stance, state-at-time and apex-return kernels;
         before them the kernels of this module they call, and the helpers."""
+        if self.family is not None:
+            return self.family.kernels(flight_kernels)
         main: list[Kernel] = []
         for choice in self.choices():
             state_at = self.state_at_kernel(choice)
@@ -357,6 +367,8 @@ class MapSpec(Declaration):
         return module_kernels(self.ident, self.built().helpers, main, self.labels())
 
     def module(self, flight_kernels: Mapping[str, Kernel]) -> Module:
+        if self.family is not None:
+            return self.family.module(flight_kernels)
         return Module(
             name=self.ident,
             doc=f"{self.title} (report section {self.section}): stance, state-at-time and apex-return "

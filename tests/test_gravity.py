@@ -299,3 +299,12 @@ def test_family_member_declaration_is_checked():
     with pytest.raises(ValueError, match="option samples is not the family's"):
         other = d_gravity.Option("samples", "x", 2, low=2, high=4, integer=True)
         _member(options=tuple(other if o.name == "samples" else o for o in d_gravity.MAPS[0].options))
+
+
+def test_a_members_kernels_are_its_familys():
+    """Asked for its kernels or module, a member gives its family's (it has no body of its own)."""
+    member = d_gravity.MAPS[2]
+    assert member.owner is d_gravity.FAMILY
+    assert member.stance_kernel() is d_gravity.FAMILY.stance_kernel()
+    assert member.state_at_kernel().name == "gravity_state_at"
+    assert member.module({}).name == "gravity"
