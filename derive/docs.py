@@ -90,11 +90,13 @@ def _per_choice(row: dict) -> list[str]:
 
 
 def _fixed(row: dict) -> list[str]:
-    """A family member's line: the kernels it shares and the arguments it fixes in ``p``."""
+    """A family member's line: its family and the arguments it fixes in ``p``."""
     if not row["fixed"]:
         return []
     fixed = ", ".join(f"`{name}` = {code:g}" for name, code in row["fixed"].items())
-    return [f"- kernels of the family `{row['module']}`, with {fixed} in `p` (not options of this map)"]
+    return [
+        f"- a map of the family `{row['module']}`: its kernels take {fixed} in `p` (not options of this map)"
+    ]
 
 
 def maps_page(index: dict) -> str:

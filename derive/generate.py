@@ -121,23 +121,13 @@ def _render_numerics(name: str, files: dict[str, str]) -> None:
     )
 
 
-def kernel_owners() -> tuple[MapSpec, ...]:
-    """The declarations whose kernels are generated: every map's owner (its family, else itself:
-    :attr:`.MapSpec.owner`), once each, in report order (a family at its first member), then the
-    exact map."""
-    owners: dict[str, MapSpec] = {}
-    for spec in (*all_maps(), ground_truth()):
-        owners.setdefault(spec.owner.name, spec.owner)
-    return tuple(owners.values())
-
-
 def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]:
     """The Jacobian kernels of every map (:meth:`MapSpec.jacobian_kernels`) and of the kernels they
     call, one module ``<module>_jacobian`` per module of the differentiated kernels."""
     widen: dict = {}
     for _ in range(2):  # the second pass with one vector JVP per callee for all its callers' patterns
         diff = Differentiator(widen=widen)
-        for spec in kernel_owners():
+        for spec in (*all_maps(), ground_truth()):
             spec.jacobian_kernels(diff, flights)
         diff.build()
         widen = widened(diff.asked)
@@ -164,7 +154,7 @@ def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]
 
 def _primal(flights) -> tuple[tuple[Module, ...], tuple[Module, ...]]:
     """The maps' modules (in report order, the exact map last) and the halves'."""
-    maps = tuple(spec.module(flights) for spec in kernel_owners())
+    maps = MapSpec.modules((*all_maps(), ground_truth()), flights)
     return maps, tuple(half.module() for half in all_halves())
 
 
@@ -197,12 +187,13 @@ _FUNC_REF = re.compile(r":func:`[\w.]+`")
 
 
 def _doc_key(k: dict) -> tuple:
-    """What a kernel's docstrings say besides its equations: summary, notes, arguments, returns,
-    status and batch form (derive/templates/kernels.py.j2). A derivative kernel's reference to the
-    kernel it differentiates counts as the same: its arguments (in the key) are that kernel's."""
+    """What a kernel's docstrings say besides its summary and equations: notes, arguments, returns,
+    status and batch form (derive/templates/kernels.py.j2; the summary line is every kernel's
+    own). A derivative kernel's reference to the kernel it differentiates counts as the same: its
+    arguments (in the key) are that kernel's."""
     doc_args = _FUNC_REF.sub(":func:", k["doc_args"])
     returns = _FUNC_REF.sub(":func:", repr(k["returns"]))
-    return (k["summary"], k["notes"], repr(k["args"]), doc_args, returns, k["status"]) + (
+    return (k["notes"], repr(k["args"]), doc_args, returns, k["status"]) + (
         k["n_out"],
         repr(k["layout"]),
         k["out_array"],

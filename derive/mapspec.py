@@ -71,11 +71,13 @@ class MapSpec(Declaration):
     #: The map reproduces the report's printed formulas, errors included, to measure them: it makes
     #: no accuracy claim (the tests over every map check its contract, not its accuracy).
     as_printed: bool = False
-    #: The declaration whose kernels this map runs (None: its own). A family declares the common
-    #: body once, its rule chosen by an option (the gravity corrections' impulse rule, types 0-4);
-    #: each member is a map of its own (name, title, equations, public options and their defaults)
-    #: that fixes the family's other options to the values ``fixed`` gives (by name; not the user's
-    #: to choose: the index row's ``fixed``, which the runtime passes with the options).
+    #: The family of maps this map belongs to (None: none): maps whose kernels differ only in the
+    #: kernels they call (the gravity corrections' types 0-4, in their impulse rule). A member's
+    #: kernels are its own, in the family's module and with the family's options as arguments, so
+    #: that every member's kernels have one layout and the same code, which derive/share.py renders
+    #: once; each member is a map of its own (name, title, equations, public options and their
+    #: defaults) that fixes the family's other options to the values ``fixed`` gives (by name; not
+    #: the user's to choose: the index row's ``fixed``, which the runtime passes with the options).
     family: MapSpec | None = None
     fixed: tuple[tuple[str, object], ...] = ()
 
@@ -126,13 +128,29 @@ class MapSpec(Declaration):
         raise ValueError(f"option {option.name}: {value!r} is outside its domain")
 
     @property
-    def owner(self) -> MapSpec:
-        """The declaration whose kernels this map runs: its family, else itself."""
-        return self.family or self
+    def module_name(self) -> str:
+        """The generated module of the map's kernels: its family's (every member's kernels in one
+        module, where derive/share.py renders their common body once), else its own."""
+        return (self.family or self).ident
+
+    def kernel_options(self) -> tuple[Option, ...]:
+        """The options the kernels take: the family's (a member's own and those it fixes, so that
+        every member's kernels have one layout and one code), else the map's."""
+        return (self.family or self).options
+
+    def option_args(self) -> tuple[Arg, ...]:
+        return tuple(o.arg() for o in self.kernel_options() if o.kernel or o.specialize)
+
+    def inputs(self, state, params) -> Inputs:
+        return Inputs(
+            state=tuple(a.symbol for a in state),
+            params={p: catalog.PARAMS[p].symbol for p in params},
+            options={o.name: o for o in self.kernel_options()},
+        )
 
     def fixed_codes(self) -> dict[str, float]:
         """The kernel arguments of the family's options this member fixes, by name."""
-        family = {o.name: o for o in self.owner.options}
+        family = {o.name: o for o in self.kernel_options()}
         return {name: self._code(family[name], value) for name, value in self.fixed}
 
     def kernel_name(self, role: str) -> str:
@@ -155,7 +173,7 @@ class MapSpec(Declaration):
     # -- kernels -------------------------------------------------------------------------------
     def domain_steps(self) -> tuple[Step, ...]:
         """Checks of option choices that depend on the touchdown state (before the map's own steps)."""
-        guards = tuple(g for g in (o.domain_guard() for o in self.options) if g is not None)
+        guards = tuple(g for g in (o.domain_guard() for o in self.kernel_options()) if g is not None)
         return (Stage((), guards),) if guards else ()
 
     def built(self) -> MapBuild:
@@ -171,8 +189,6 @@ class MapSpec(Declaration):
         return self.choices()[0] if choice is None else choice
 
     def _stance_kernel(self) -> Kernel:
-        if self.family is not None:  # a member runs its family's kernels
-            return self.family._stance_kernel()
         if "stance" in self._cache:
             return self._cache["stance"]
         self._cache["stance"] = Kernel(
@@ -184,7 +200,7 @@ class MapSpec(Declaration):
             outputs=catalog.STANCE + Group("", self.extras),
             layout=self.layout(catalog.TOUCHDOWN),
             notes=self.notes,
-            module=self.ident,
+            module=self.module_name,
             inline=self.inline,
             inline_rows=self.inline,
         )
@@ -208,11 +224,9 @@ class MapSpec(Declaration):
             **{o.name: sp.Float(o.default_code) for o in self.options if o.kernel},
             **{name: sp.Float(code) for name, code in self.fixed_codes().items()},
         }
-        return Call(self.owner.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
+        return Call(self.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
 
     def state_at_kernel(self, choice: dict | None = None) -> Kernel | None:
-        if self.family is not None:
-            return self.family.state_at_kernel(choice)
         if self.built().state_at is None:
             return None
         t = catalog.TIME
@@ -225,7 +239,7 @@ class MapSpec(Declaration):
                 steps=self.domain_steps() + self.built().state_at(t.symbol),
                 outputs=catalog.TRAJECTORY,
                 layout=self.layout((t,) + catalog.TOUCHDOWN),
-                module=self.ident,
+                module=self.module_name,
                 inline_rows=self.inline,
             ),
             self._choice(choice),
@@ -235,8 +249,6 @@ class MapSpec(Declaration):
         """Apex -> touchdown (exact ballistic descent onto ground ``ground`` higher) -> this map's
         stance -> liftoff -> next apex (exact ballistic ascent), and the step's geometry. The apex
         speed is signed: the step's direction (its sign) is the one the liftoff must keep."""
-        if self.family is not None:
-            return self.family.apex_return_kernel(flight_kernels, choice)
         to_td, to_apex = flight_kernels["apex_to_touchdown"], flight_kernels["liftoff_to_apex"]
         stance = self._stance_kernel()
         td = ("td_q_r", "td_q_rd", "td_q_th", "td_q_thd")
@@ -267,7 +279,7 @@ class MapSpec(Declaration):
                 stance,
                 {**dict(zip(touchdown_names, (sym(n) for n in td), strict=True)), **passthrough},
                 stance_outs,
-                comment=f"stance: {self.title}",
+                comment=f"stance: {(self.family or self).title}",
             ),
             Call(
                 to_apex,
@@ -302,7 +314,7 @@ class MapSpec(Declaration):
                 steps=steps,
                 outputs=catalog.APEX_RETURN + Group("", self.extras),
                 layout=self.layout(catalog.APEX_ARGS),
-                module=self.ident,
+                module=self.module_name,
                 inline_rows=self.inline,
             ),
             self._choice(choice),
@@ -329,8 +341,6 @@ class MapSpec(Declaration):
         ``<ident>_jacobian``; the kernels they call land in ``diff.kernels`` too. The stance one is
         built first, so that the apex-return kernel's call of the stance reuses it (a superset of the
         arguments active there: the touchdown leg length is not)."""
-        if self.family is not None:
-            return self.family.jacobian_kernels(diff, flight_kernels)
         for choice in self.choices():
             suffix = self._suffix(choice)
             diff.jacobian(
@@ -357,18 +367,48 @@ class MapSpec(Declaration):
     def kernels(self, flight_kernels: Mapping[str, Kernel]) -> tuple[Kernel, ...]:
         """Per choice of the specialized options: the stance, state-at-time and apex-return kernels;
         before them the kernels of this module they call, and the helpers."""
-        if self.family is not None:
-            return self.family.kernels(flight_kernels)
         main: list[Kernel] = []
         for choice in self.choices():
             state_at = self.state_at_kernel(choice)
             main += [self.stance_kernel(choice), *((state_at,) if state_at else ())]
             main.append(self.apex_return_kernel(flight_kernels, choice))
-        return module_kernels(self.ident, self.built().helpers, main, self.labels())
+        return module_kernels(self.module_name, self.built().helpers, main, self.labels())
+
+    @staticmethod
+    def modules(specs, flight_kernels: Mapping[str, Kernel]) -> tuple[Module, ...]:
+        """The kernel modules of ``specs``: a map's own (:meth:`module`), or a family's, which holds
+        every member's kernels (in the members' order; derive/share.py renders what they share
+        once)."""
+        groups: dict[str, list[MapSpec]] = {}
+        for spec in specs:
+            groups.setdefault(spec.module_name, []).append(spec)
+        out = []
+        for name, members in groups.items():
+            family = members[0].family
+            if family is None:
+                out.append(members[0].module(flight_kernels))
+                continue
+
+            def kernels(members=tuple(members)) -> tuple[Kernel, ...]:
+                merged: dict[str, Kernel] = {}
+                for member in members:
+                    for k in member.kernels(flight_kernels):
+                        merged.setdefault(k.name, k)
+                return tuple(merged.values())
+
+            out.append(
+                Module(
+                    name=name,
+                    doc=f"{family.title} (report sections {family.section}): the stance, state-at-time and "
+                    f"apex-return kernels of the maps {', '.join(m.name for m in members)} (one body, "
+                    "derive/share.py).",
+                    source=family.source,
+                    kernels=kernels,
+                )
+            )
+        return tuple(out)
 
     def module(self, flight_kernels: Mapping[str, Kernel]) -> Module:
-        if self.family is not None:
-            return self.family.module(flight_kernels)
         return Module(
             name=self.ident,
             doc=f"{self.title} (report section {self.section}): stance, state-at-time and apex-return "
@@ -382,24 +422,23 @@ class MapSpec(Declaration):
         """The map's row of the generated index: what ``slipmaps maps`` lists, and every kernel's
         calling convention by role (:meth:`~.ir.Kernel.signature`), which the runtime fills by name.
         A family member's kernels are its family's, and its row says which options it ``fixed``."""
-        owner = self.owner
-        stance, state_at = owner._stance_kernel(), owner.state_at_kernel({})
-        apex = owner.apex_return_kernel(flight_kernels, {})
-        jac_module = f"{owner.ident}_jacobian"
-        kernels = {"stance": owner.signature(stance), "apex_return": owner.signature(apex)}
+        stance, state_at = self._stance_kernel(), self.state_at_kernel({})
+        apex = self.apex_return_kernel(flight_kernels, {})
+        jac_module = f"{self.module_name}_jacobian"
+        kernels = {"stance": self.signature(stance), "apex_return": self.signature(apex)}
         if state_at is not None:
-            kernels["state_at"] = owner.signature(state_at)
+            kernels["state_at"] = self.signature(state_at)
         for role, primal, wrt in (
-            ("stance", stance, owner.stance_wrt()),
-            ("apex_return", apex, owner.apex_wrt()),
+            ("stance", stance, self.stance_wrt()),
+            ("apex_return", apex, self.apex_wrt()),
         ):
-            sig = owner.signature(primal)
+            sig = self.signature(primal)
             kernels[f"{role}_jacobian"] = {
                 **sig,
                 "wrt": list(wrt),
                 "module": jac_module,
-                "name": sig["name"].replace(primal.name, owner.kernel_name(f"{role}_jacobian"), 1),
-                **({"base": owner.kernel_name(f"{role}_jacobian")} if "base" in sig else {}),
+                "name": sig["name"].replace(primal.name, self.kernel_name(f"{role}_jacobian"), 1),
+                **({"base": self.kernel_name(f"{role}_jacobian")} if "base" in sig else {}),
             }
         return {
             **self.row(
@@ -409,5 +448,5 @@ class MapSpec(Declaration):
                 kernels=kernels,
                 fixed=self.fixed_codes(),
             ),
-            "module": owner.ident,
+            "module": self.module_name,
         }

@@ -75,13 +75,23 @@ def _literals(value, fn, seen: list):
     return value
 
 
+def _silent(value):
+    """``value`` (a code field) with its prose blanked: kernels that differ only in a comment (one
+    naming the callee a family member calls) share a body, whose comments are its first kernel's."""
+    if isinstance(value, list):
+        return [_silent(v) for v in value]
+    if isinstance(value, dict):
+        return {f: "" if f in _PROSE else _silent(v) for f, v in value.items()}
+    return value
+
+
 def _key(k: dict) -> tuple[str, list[str], list[str]]:
     """The kernel's code with its callees' names replaced by their order of first use and its float
     literals by a mark; that order; the literals, one per occurrence: two kernels of the same key
     differ only in the callees they call and in constants."""
     fields = {f: v for f, v in k.items() if f not in _DOC_FIELDS}
     literals: list[str] = []
-    code = _literals({f: fields[f] for f in _CODE_FIELDS}, lambda i, t: "\x01", literals)
+    code = _literals({f: _silent(fields[f]) for f in _CODE_FIELDS}, lambda i, t: "\x01", literals)
     text = json.dumps({**fields, **code}, sort_keys=True, default=repr)
     order: list[str] = []
 

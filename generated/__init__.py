@@ -14,8 +14,9 @@ Modules:
     flight: Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2).
     geyer: Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
         kernels.
-    gravity: Gravity corrections types 0-4 (report section 4.1-4.5): stance, state-at-time and apex-return
-        kernels.
+    gravity: Gravity corrections types 0-4 (report sections 4.1-4.5): the stance, state-at-time and
+        apex-return kernels of the maps gravity-type0, gravity-type1, gravity-type2, gravity-type3,
+        gravity-type4 (one body, derive/share.py).
     gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance,
         state-at-time and apex-return kernels.
     geyer_vs: Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance,

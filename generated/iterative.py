@@ -10,7 +10,7 @@
 #   flight.py sha256:af2637d59c8ab493
 #   geyer.py sha256:f781cbbce76a77c5
 #   geyer_vs.py sha256:989b828600db2cf3
-#   gravity.py sha256:2700c6aace1dadb9
+#   gravity.py sha256:1f154993fd7a0460
 #   gravity_type5.py sha256:2521abfe9185b31a
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
@@ -25,7 +25,8 @@ from .support import fail, finite, into_rows, row, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
 from .geyer_vs import geyer_vs_stance
-from .gravity import gravity_stance
+from .gravity import (gravity_type0_stance, gravity_type1_stance, gravity_type2_stance, gravity_type3_stance,
+    gravity_type4_stance)
 from .gravity_type5 import gravity_type5_stance
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -640,25 +641,7 @@ def iterative_core(_a):
 def zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo):
     """The zeroth iterate 'held': the touchdown state held, the bottom from the radial work.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-
-    Returns a tuple:
-        z_b_q_r: zeroth iterate: z_b_q_r
-        z_b_q_th: zeroth iterate: z_b_q_th
-        z_b_q_thd: zeroth iterate: z_b_q_thd
-        z_lo_q_th: zeroth iterate: z_lo_q_th
-        z_lo_q_thd: zeroth iterate: z_lo_q_thd
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`zeroth_geyer`.
     """
     # Total ops: 31
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -686,11 +669,11 @@ def zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
+    _p0 = carray(stack(13), 13)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 0.0, 1.0, 0.0,)
+        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 0.0,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_stance(_x0, _p0, _o0)
+    _c0 = gravity_type0_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -708,11 +691,11 @@ def zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
+    _p0 = carray(stack(13), 13)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 100.0, 1e-12,)
+        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_stance(_x0, _p0, _o0)
+    _c0 = gravity_type1_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -730,11 +713,11 @@ def zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 2 (average leg length)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
+    _p0 = carray(stack(13), 13)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 2.0, 100.0, 1e-12,)
+        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_stance(_x0, _p0, _o0)
+    _c0 = gravity_type2_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -752,11 +735,11 @@ def zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
+    _p0 = carray(stack(13), 13)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 3.0, 100.0, 1e-12,)
+        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_stance(_x0, _p0, _o0)
+    _c0 = gravity_type3_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)
@@ -774,11 +757,11 @@ def zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
+    _p0 = carray(stack(13), 13)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 4.0, 100.0, 1e-12,)
+        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
-    _c0 = gravity_stance(_x0, _p0, _o0)
+    _c0 = gravity_type4_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
     # (internal helper: its callers check that their outputs are finite)

@@ -10,7 +10,7 @@
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_jacobian.py sha256:439802d2318bb4fa
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   gravity_jacobian.py sha256:1ecb99831a9e2a6d
+#   gravity_jacobian.py sha256:55636d372052130a
 #   gravity_type5_jacobian.py sha256:cd2fbda68786b927
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
@@ -26,7 +26,8 @@ from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_g
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian
 from .geyer_vs_jacobian import geyer_vs_stance_jacobian
-from .gravity_jacobian import gravity_stance_jacobian
+from .gravity_jacobian import (gravity_type0_stance_jacobian, gravity_type1_stance_jacobian,
+    gravity_type2_stance_jacobian, gravity_type3_stance_jacobian, gravity_type4_stance_jacobian)
 from .gravity_type5_jacobian import gravity_type5_stance_jacobian
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -198,17 +199,8 @@ def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_t
     """The zeroth iterate 'held': the touchdown state held, the bottom from the radial work, and the
     derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c, k_d.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments: those of :func:`iterative.zeroth_held`, in its order.
-
-    Writes into out:
-        <output>: each output of :func:`iterative.zeroth_held`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
-            (returned).
+    Arguments, returns and status: those of
+    :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 99
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -276,11 +268,47 @@ def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     # stance: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
     (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
+    _p0 = carray(stack(13), 13)
     (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 0.0, 1.0, 0.0,)
+        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 0.0,)
     _o0 = carray(stack(72), 72)
-    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
+    _c0 = gravity_type0_stance_jacobian(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    # (internal helper: its callers check that their outputs are finite)
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
+        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
+        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
+    return STATUS_OK
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
+        gravity_stance):
+    """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
+    stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
+    k_d.
+
+    The body that 4 kernels share, each passing the kernel it calls as gravity_stance
+    (derive/share.py): zeroth_gravity_{type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d,
+    type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d,
+    type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d,
+    type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d}.
+
+    Arguments, returns and status: those of the kernels, then gravity_stance.
+    """
+    # Total ops: 0
+    # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _x0 = carray(stack(4), 4)
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    _p0 = carray(stack(13), 13)
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
+        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
+    _o0 = carray(stack(72), 72)
+    _c0 = gravity_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # (internal helper: its callers check that their outputs are finite)
@@ -300,28 +328,13 @@ def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
+    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type1_stance_jacobian.
     Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
-        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
-        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
-    return STATUS_OK
+    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
+        gravity_type1_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")
@@ -331,28 +344,13 @@ def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
+    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type2_stance_jacobian.
     Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    # stance: Gravity correction type 2 (average leg length)
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 2.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
-        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
-        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
-    return STATUS_OK
+    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
+        gravity_type2_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")
@@ -362,28 +360,13 @@ def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
+    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type3_stance_jacobian.
     Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 3.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
-        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
-        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
-    return STATUS_OK
+    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
+        gravity_type3_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")
@@ -393,28 +376,13 @@ def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
+    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type4_stance_jacobian.
     Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
-    _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
-    _p0 = carray(stack(14), 14)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12], _p0[13],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 4.0, 100.0, 1e-12,)
-    _o0 = carray(stack(72), 72)
-    _c0 = gravity_stance_jacobian(_x0, _p0, _o0)
-    if _c0 != STATUS_OK:
-        return fail(out, _c0)
-    # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34],) = (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], _o0[22], _o0[23], _o0[24], _o0[25], _o0[26], 0.0,
-        _o0[32], _o0[33], _o0[34], _o0[35], _o0[36], 0.0, _o0[37], _o0[38], _o0[39], _o0[40], _o0[41], 0.0,
-        _o0[52], _o0[53], _o0[54], _o0[55], _o0[56], 0.0, _o0[57], _o0[58], _o0[59], _o0[60], _o0[61], 0.0,)
-    return STATUS_OK
+    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
+        gravity_type4_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")

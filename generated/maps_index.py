@@ -141,97 +141,74 @@ _repeated16 = {'name': 'samples', 'kind': 'int', 'default': 2, 'doc':
 _repeated17 = [{'name': 'P_c', 'doc': 'virtual gravity effect: the stance impulse added to p_th', 'unit':
     'N m s', 'odd': True}, {'name': 'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}]
 
-_repeated18 = ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval',
-    'leg_length', 'rule', 'iterations', 'tol']
-
-_repeated19 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+_repeated18 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c', 'passes']
 
-_repeated20 = {'module': 'gravity', 'name': 'gravity_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td'], 'p': _repeated18, 'out': _repeated19}
-
-_repeated21 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+_repeated19 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th',
     'P_c', 'passes']
 
-_repeated22 = {'module': 'gravity', 'name': 'gravity_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
-    'ground', 'retraction_rate'], 'p': _repeated18, 'out': _repeated21}
-
-_repeated23 = {'module': 'gravity', 'name': 'gravity_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td'], 'p': _repeated18, 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}
-
-_repeated24 = {'module': 'gravity_jacobian', 'name': 'gravity_stance_jacobian', 'x': ['q_r_td', 'q_rd_td',
-    'q_th_td', 'q_thd_td'], 'p': _repeated18, 'out': _repeated19, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td',
-    'q_thd_td', 'k']}
-
-_repeated25 = {'module': 'gravity_jacobian', 'name': 'gravity_apex_return_jacobian', 'x': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': _repeated18, 'out': _repeated21, 'wrt': [
-    'b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}
-
-_repeated26 = {'stance': _repeated20, 'apex_return': _repeated22, 'state_at': _repeated23, 'stance_jacobian':
-    _repeated24, 'apex_return_jacobian': _repeated25}
-
-_repeated27 = {'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
+_repeated20 = {'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
     "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes']}
 
-_repeated28 = {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
+_repeated21 = {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
     'stop when P_c moves by at most tol times the momentum scale; 0: run all passes', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'tolerance']}
 
-_repeated29 = [{'value': 'eq11', 'doc':
+_repeated22 = [{'value': 'eq11', 'doc':
     '(11), eqs (55)-(57) and (67)-(68) (their printed forms lack an l0 on the b term)'}, {'value': 'eq21',
     'doc': '(21), eqs (58)-(59) and (70)-(72); touchdown at l0 only'}, {'value': 'eq23', 'doc':
     '(23), eqs (60)-(61) and (73)-(75); touchdown at l0 only'}]
 
-_repeated30 = {'name': 'leg_length', 'kind': 'choice', 'default': 'eq11', 'doc':
-    'the stance solution the average leg length is taken from', 'choices': _repeated29, 'low': None, 'high':
+_repeated23 = {'name': 'leg_length', 'kind': 'choice', 'default': 'eq11', 'doc':
+    'the stance solution the average leg length is taken from', 'choices': _repeated22, 'low': None, 'high':
     None, 'at_rest_length': ['eq21', 'eq23'], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'accuracy-variants']}
 
-_repeated31 = {'value': 'halves', 'doc':
+_repeated24 = {'value': 'halves', 'doc':
     "touchdown to bottom and bottom to liftoff, summed (the report's suggestion for the split "
     'maps of section 5)' }
 
-_repeated32 = [{'value': 'stance', 'doc': 'one interval, touchdown to liftoff'}, _repeated31]
+_repeated25 = [{'value': 'stance', 'doc': 'one interval, touchdown to liftoff'}, _repeated24]
 
-_repeated33 = {'name': 'interval', 'kind': 'choice', 'default': 'halves', 'doc':
-    'the intervals [t_i, t_f] of the correction', 'choices': _repeated32, 'low': None, 'high': None,
+_repeated26 = {'name': 'interval', 'kind': 'choice', 'default': 'halves', 'doc':
+    'the intervals [t_i, t_f] of the correction', 'choices': _repeated25, 'low': None, 'high': None,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-variants']}
 
-_repeated34 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+_repeated27 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'P_c_compression', 'P_c_decompression',
     'passes']
 
-_repeated35 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+_repeated28 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th',
     'P_c_compression', 'P_c_decompression', 'passes']
 
-_repeated36 = [{'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc':
+_repeated29 = [{'value': '1', 'doc': '1 node'}, {'value': '2', 'doc': '2 nodes'}, {'value': '3', 'doc':
     '3 nodes'}, {'value': '4', 'doc': '4 nodes'}, {'value': '6', 'doc': '6 nodes'}]
 
-_repeated37 = {'name': 'nodes', 'kind': 'choice', 'default': '4', 'doc':
+_repeated30 = {'name': 'nodes', 'kind': 'choice', 'default': '4', 'doc':
     "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))", 'choices':
-    _repeated36, 'low': None, 'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False,
+    _repeated29, 'low': None, 'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False,
     'backends': {}, 'roles': ['accuracy-variants']}
 
-_repeated38 = {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
+_repeated31 = {'name': 'iterations', 'kind': 'int', 'default': 6, 'doc':
     'Picard passes per half-stance (0 = the zeroth iterate)', 'choices': [], 'low': 0, 'high': 100,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
     'convergence-passes']}
 
-_repeated39 = {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
+_repeated32 = {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
     'stop when no node value moves by more than tol (relative; 0 = run every pass)', 'choices': [], 'low':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'tolerance']}
 
-_repeated40 = [_repeated37, _repeated38, _repeated39, _repeated8]
+_repeated33 = [_repeated30, _repeated31, _repeated32, _repeated8]
 
-_repeated41 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+_repeated34 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'passes']
 
-_repeated42 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+_repeated35 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th',
     'passes']
 
@@ -290,44 +267,120 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'tolerance']}], 'module': 'gravity', 'summary':
     'P_c from the torque at l0 sampled at touchdown and liftoff (49) or also the bottom (51)', 'roles': [
     'yu-target'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed': {'rule': 0.0,
-    'leg_length': 0.0, 'interval': 1.0}}, {'name': 'gravity-type1', 'title':
-    'Gravity correction type 1 (leg length (l0 + q_r_b)/2)', 'section': '4.2', 'equations': ['46', '47', '48',
-    '50', '52', '53', '54'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated16,
-    _repeated27, _repeated28], 'module': 'gravity', 'summary':
+    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_type0_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out':
+    _repeated18}, 'apex_return': {'module': 'gravity', 'name': 'gravity_type0_apex_return', 'x': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td',
+    'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19},
+    'state_at': {'module': 'gravity', 'name': 'gravity_type0_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']},
+    'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_type0_stance_jacobian', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading',
+    'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated18, 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name':
+    'gravity_type0_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19, 'wrt': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'leg_length': 0.0, 'interval': 1.0}}, {'name':
+    'gravity-type1', 'title': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2)', 'section': '4.2',
+    'equations': ['46', '47', '48', '50', '52', '53', '54'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [
+    _repeated15, _repeated16, _repeated20, _repeated21], 'module': 'gravity', 'summary':
     'P_c from the torque at the mean of the rest and bottom leg lengths (52), (54)', 'roles': ['yu-target'],
     'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': ['constant_stiffness'], 'as_printed':
-    False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed': {'rule': 1.0, 'leg_length': 0.0,
-    'interval': 1.0}}, {'name': 'gravity-type2', 'title': 'Gravity correction type 2 (average leg length)',
-    'section': '4.3', 'equations': ['46', '47', '48', '50', '55', '56', '57', '58', '59', '60', '61', '62',
-    '63', '64'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated16, _repeated30,
-    _repeated27, _repeated28], 'module': 'gravity', 'summary':
-    'P_c from the torque at the stance-average leg length (62), (64)', 'roles': ['yu-target',
-    'accuracy-figure'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': [
-    'constant_stiffness'], 'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed':
-    {'rule': 2.0, 'interval': 1.0}}, {'name': 'gravity-type3', 'title':
-    'Gravity correction type 3 (trapezoid on [t_i, t_f])', 'section': '4.4', 'equations': ['46', '47', '48',
-    '50', '65', '66'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated33, _repeated27,
-    _repeated28], 'module': 'gravity', 'summary':
+    False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_type1_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out':
+    _repeated18}, 'apex_return': {'module': 'gravity', 'name': 'gravity_type1_apex_return', 'x': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td',
+    'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19},
+    'state_at': {'module': 'gravity', 'name': 'gravity_type1_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']},
+    'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_type1_stance_jacobian', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading',
+    'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated18, 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name':
+    'gravity_type1_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19, 'wrt': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'leg_length': 0.0, 'interval': 1.0}}, {'name':
+    'gravity-type2', 'title': 'Gravity correction type 2 (average leg length)', 'section': '4.3', 'equations':
+    ['46', '47', '48', '50', '55', '56', '57', '58', '59', '60', '61', '62', '63', '64'], 'params': ['m',
+    'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated16, _repeated23, _repeated20, _repeated21], 'module':
+    'gravity', 'summary': 'P_c from the torque at the stance-average leg length (62), (64)', 'roles': [
+    'yu-target', 'accuracy-figure'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': [
+    'constant_stiffness'], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':
+    'gravity', 'name': 'gravity_type2_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
+    'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations',
+    'tol'], 'out': _repeated18}, 'apex_return': {'module': 'gravity', 'name': 'gravity_type2_apex_return',
+    'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out':
+    _repeated19}, 'state_at': {'module': 'gravity', 'name': 'gravity_type2_state_at', 'x': ['t', 'q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading',
+    'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']},
+    'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_type2_stance_jacobian', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading',
+    'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated18, 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name':
+    'gravity_type2_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19, 'wrt': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'interval': 1.0}}, {'name': 'gravity-type3',
+    'title': 'Gravity correction type 3 (trapezoid on [t_i, t_f])', 'section': '4.4', 'equations': ['46',
+    '47', '48', '50', '65', '66'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated26,
+    _repeated20, _repeated21], 'module': 'gravity', 'summary':
     'P_c by the trapezoid rule on the torque with the true leg lengths (65), whole stance or halves', 'roles':
     ['yu-target'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': [
-    'constant_stiffness'], 'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed':
-    {'rule': 3.0, 'samples': 2.0, 'leg_length': 0.0}}, {'name': 'gravity-type4', 'title':
-    'Gravity correction type 4 (average leg length on [t_i, t_f])', 'section': '4.5', 'equations': ['46',
-    '47', '48', '50', '67', '68', '69', '70', '71', '72', '73', '74', '75', '76', '77'], 'params': ['m', 'l0',
-    'k', 'g_s'], 'options': [_repeated15, _repeated33, _repeated30, _repeated27, _repeated28], 'module':
-    'gravity', 'summary':
+    'constant_stiffness'], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':
+    'gravity', 'name': 'gravity_type3_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
+    'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations',
+    'tol'], 'out': _repeated18}, 'apex_return': {'module': 'gravity', 'name': 'gravity_type3_apex_return',
+    'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out':
+    _repeated19}, 'state_at': {'module': 'gravity', 'name': 'gravity_type3_state_at', 'x': ['t', 'q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading',
+    'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']},
+    'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_type3_stance_jacobian', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading',
+    'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated18, 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name':
+    'gravity_type3_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19, 'wrt': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'samples': 2.0, 'leg_length': 0.0}}, {'name':
+    'gravity-type4', 'title': 'Gravity correction type 4 (average leg length on [t_i, t_f])', 'section':
+    '4.5', 'equations': ['46', '47', '48', '50', '67', '68', '69', '70', '71', '72', '73', '74', '75', '76',
+    '77'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [_repeated15, _repeated26, _repeated23, _repeated20,
+    _repeated21], 'module': 'gravity', 'summary':
     'P_c from the torque at the average leg length of each interval (76), whole stance or halves', 'roles': [
     'yu-target'], 'specialized': [], 'choices': {}, 'extras': _repeated17, 'requires': ['constant_stiffness'],
-    'as_printed': False, 'approximation_statuses': [], 'kernels': _repeated26, 'fixed': {'rule': 4.0,
-    'samples': 2.0}}, {'name': 'gravity-type5', 'title': 'Gravity correction type 5 (time-varying momentum)',
-    'section': '4.6', 'equations': ['46', '47', '48'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name':
-    'iterations', 'kind': 'int', 'default': 100, 'doc': "fixed-point passes T5.8 from Geyer's map", 'choices':
-    [], 'low': 0, 'high': 1000, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {},
-    'roles': ['accuracy-passes', 'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 1e-12,
-    'doc': 'stop when every state moved by at most tol times its scale; 0: run all passes', 'choices': [],
-    'low': 0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {},
-    'roles': ['tolerance']}], 'module': 'gravity_type5', 'summary':
+    'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity', 'name':
+    'gravity_type4_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s',
+    'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out':
+    _repeated18}, 'apex_return': {'module': 'gravity', 'name': 'gravity_type4_apex_return', 'x': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td',
+    'q_r_lo', 'reading', 'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19},
+    'state_at': {'module': 'gravity', 'name': 'gravity_type4_state_at', 'x': ['t', 'q_r_td', 'q_rd_td',
+    'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']},
+    'stance_jacobian': {'module': 'gravity_jacobian', 'name': 'gravity_type4_stance_jacobian', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading',
+    'samples', 'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated18, 'wrt': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module': 'gravity_jacobian', 'name':
+    'gravity_type4_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'reading', 'samples',
+    'interval', 'leg_length', 'iterations', 'tol'], 'out': _repeated19, 'wrt': ['b_y_apex', 'b_xd_apex',
+    'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {'samples': 2.0}}, {'name': 'gravity-type5',
+    'title': 'Gravity correction type 5 (time-varying momentum)', 'section': '4.6', 'equations': ['46', '47',
+    '48'], 'params': ['m', 'l0', 'k', 'g_s'], 'options': [{'name': 'iterations', 'kind': 'int', 'default':
+    100, 'doc': "fixed-point passes T5.8 from Geyer's map", 'choices': [], 'low': 0, 'high': 1000,
+    'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': ['accuracy-passes',
+    'convergence-passes']}, {'name': 'tol', 'kind': 'float', 'default': 1e-12, 'doc':
+    'stop when every state moved by at most tol times its scale; 0: run all passes', 'choices': [], 'low':
+    0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    'tolerance']}], 'module': 'gravity_type5', 'summary':
     'the gravity torque at the 3 Gauss-Legendre nodes of the stance, interpolated: a cubic momentum '
     'P(t); radial solution about the mean compression; leg angle in closed form (docs/type5.md)', 'roles': [
     'yu-target', 'accuracy-figure', 'region'], 'specialized': [], 'choices': {}, 'extras': [{'name': 'P_c',
@@ -335,18 +388,18 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'passes', 'doc': 'fixed-point passes run', 'unit': '', 'odd': False}], 'requires': ['constant_stiffness'],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'gravity_type5',
     'name': 'gravity_type5_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': _repeated19}, 'apex_return': {'module':
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out': _repeated18}, 'apex_return': {'module':
     'gravity_type5', 'name': 'gravity_type5_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
     'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out':
-    _repeated21}, 'state_at': {'module': 'gravity_type5', 'name': 'gravity_type5_state_at', 'x': ['t',
+    _repeated19}, 'state_at': {'module': 'gravity_type5', 'name': 'gravity_type5_state_at', 'x': ['t',
     'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
     'iterations', 'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module':
     'gravity_type5_jacobian', 'name': 'gravity_type5_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td',
     'q_thd_td'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'iterations', 'tol'], 'out':
-    _repeated19, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module':
+    _repeated18, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k']}, 'apex_return_jacobian': {'module':
     'gravity_type5_jacobian', 'name': 'gravity_type5_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
     'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'iterations', 'tol'], 'out': _repeated21, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'iterations', 'tol'], 'out': _repeated19, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
     'retraction_rate', 'k']}}, 'fixed': {}}, {'name': 'geyer-vs', 'title':
     'Simple variable-stiffness map (Geyer et al. per half)', 'section': '5.1', 'equations': ['78', '79', '80',
     '81', '82', '83', '84', '85', '86', '87', '88', '89', '90', '91', '92', '93', '94', '96', '97', '98',
@@ -369,7 +422,7 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'accuracy-variants', 'stiffness-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
     "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
-    'convergence-passes']}, _repeated28], 'module': 'geyer_vs', 'summary':
+    'convergence-passes']}, _repeated21], 'module': 'geyer_vs', 'summary':
     "Geyer et al.'s map with k_c to the bottom, the energy jump (97)-(98), again with k_d to liftoff; "
     'optionally a gravity correction per half', 'roles': ['default'], 'specialized': [], 'choices': {},
     'extras': [{'name': 'P_c_compression', 'doc':
@@ -379,55 +432,55 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'requires': [], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':
     'geyer_vs', 'name': 'geyer_vs_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
     'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out':
-    _repeated34}, 'apex_return': {'module': 'geyer_vs', 'name': 'geyer_vs_apex_return', 'x': ['b_y_apex',
+    _repeated27}, 'apex_return': {'module': 'geyer_vs', 'name': 'geyer_vs_apex_return', 'x': ['b_y_apex',
     'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
-    'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': _repeated35}, 'state_at': {
+    'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out': _repeated28}, 'state_at': {
     'module': 'geyer_vs', 'name': 'geyer_vs_state_at', 'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'],
     'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations',
     'tol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'geyer_vs_jacobian',
     'name': 'geyer_vs_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
     'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'continuity', 'gravity', 'iterations', 'tol'], 'out':
-    _repeated34, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {
+    _repeated27, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {
     'module': 'geyer_vs_jacobian', 'name': 'geyer_vs_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex',
     'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'continuity', 'gravity', 'iterations', 'tol'], 'out': _repeated35, 'wrt': ['b_y_apex', 'b_xd_apex',
+    'continuity', 'gravity', 'iterations', 'tol'], 'out': _repeated28, 'wrt': ['b_y_apex', 'b_xd_apex',
     'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}, {'name': 'iterative', 'title':
     'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2', 'equations': ['27',
     '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118', '137'], 'params': ['m',
-    'l0', 'k_c', 'k_d', 'g_s'], 'options': _repeated40, 'module': 'iterative', 'summary':
+    'l0', 'k_c', 'k_d', 'g_s'], 'options': _repeated33, 'module': 'iterative', 'summary':
     'both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the radial work; '
     'k_c before the bottom, k_d after', 'roles': ['region', 'accuracy-figure'], 'specialized': ['zeroth'],
     'choices': _repeated12, 'extras': [{'name': 'passes', 'doc':
     'Picard passes run (the larger of the two halves)', 'unit': '1', 'odd': False}], 'requires': [],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'iterative', 'name':
     'iterative_stance_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated41, 'base':
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated34, 'base':
     'iterative_stance'}, 'apex_return': {'module': 'iterative', 'name': 'iterative_apex_return_zeroth_geyer',
     'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated42, 'base':
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated35, 'base':
     'iterative_apex_return'}, 'stance_jacobian': {'module': 'iterative_jacobian', 'name':
     'iterative_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
-    'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated41,
+    'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated34,
     'base': 'iterative_stance_jacobian', 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
     'apex_return_jacobian': {'module': 'iterative_jacobian', 'name':
     'iterative_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
     'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
-    'iterations', 'tol'], 'out': _repeated42, 'base': 'iterative_apex_return_jacobian', 'wrt': ['b_y_apex',
+    'iterations', 'tol'], 'out': _repeated35, 'base': 'iterative_apex_return_jacobian', 'wrt': ['b_y_apex',
     'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}]
 
-_repeated43 = {'name': 'rtol', 'kind': 'float', 'default': 1e-11, 'doc':
+_repeated36 = {'name': 'rtol', 'kind': 'float', 'default': 1e-11, 'doc':
     'relative tolerance of the DOP853 integration', 'choices': [], 'low': 1e-14, 'high': 0.001,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
 
-_repeated44 = {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
+_repeated37 = {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
     'absolute tolerance of the DOP853 integration', 'choices': [], 'low': 1e-16, 'high': 0.001,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
 
-_repeated45 = [_repeated43, _repeated44]
+_repeated38 = [_repeated36, _repeated37]
 
 HALVES = [{'name': 'exact-compression', 'title':
     'Exact compression half (touchdown to bottom, k_c; DOP853 integration)', 'section': '2.2', 'equations': [
-    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo'], 'options': _repeated45, 'module':
+    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo'], 'options': _repeated38, 'module':
     'exact_compression', 'summary':
     "the exact stance's compression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'touchdown', 'end': 'bottom',
@@ -435,7 +488,7 @@ HALVES = [{'name': 'exact-compression', 'title':
     'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo', 'rtol', 'atol'],
     'out': ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd']}}}, {'name': 'exact-decompression',
     'title': 'Exact decompression half (bottom to liftoff, k_d; DOP853 integration)', 'section': '2.2',
-    'equations': ['2', '3'], 'params': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': _repeated45, 'module':
+    'equations': ['2', '3'], 'params': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': _repeated38, 'module':
     'exact_decompression', 'summary':
     "the exact stance's decompression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'bottom', 'end': 'liftoff',
@@ -447,7 +500,7 @@ HALVES = [{'name': 'exact-compression', 'title':
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']}}}, {'name': 'iterative-compression',
     'title': 'Iterative compression half (touchdown to bottom, k_c; converging form)', 'section': '5.2.1',
     'equations': ['29', '30', '31', '32', '114', '115', '116', '117', '118', '123'], 'params': ['m', 'l0',
-    'k_c', 'g_s'], 'options': _repeated40, 'module': 'iterative_compression', 'summary':
+    'k_c', 'g_s'], 'options': _repeated33, 'module': 'iterative_compression', 'summary':
     'the compression half of `iterative`: bottom leg length from the radial work, Picard passes on '
     'Gauss nodes in u', 'roles': [], 'specialized': ['zeroth'], 'choices': _repeated12, 'extras': [{'name':
     'passes', 'doc': 'Picard passes run', 'unit': '1', 'odd': False}], 'whole': 'iterative', 'start':
@@ -469,7 +522,7 @@ HALVES = [{'name': 'exact-compression', 'title':
     'end_q_th', 'end_q_thd'], 'base': 'iterative_report_compression'}}}, {'name': 'iterative-decompression',
     'title': 'Iterative decompression half (bottom to liftoff, k_d; converging form)', 'section': '5.2.2',
     'equations': ['29', '30', '31', '32', '37', '41', '137', '138', '139', '140', '141', '143'], 'params': [
-    'm', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [_repeated37, _repeated38, _repeated39], 'module':
+    'm', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [_repeated30, _repeated31, _repeated32], 'module':
     'iterative_decompression', 'summary':
     "the decompression half of `iterative` from any bottom state: zeroth iterate the bottom's angle "
     'and angular momentum held, liftoff p_r from the radial work', 'roles': [], 'specialized': [], 'choices':
@@ -503,8 +556,8 @@ EXACT = {'name': 'exact', 'title': 'Exact stance by numerical integration (DOP85
     'which DOP853 implementation integrates the stance (same algorithm, events and statuses)', 'choices': [{
     'value': 'compiled', 'doc': 'numba-compiled, batches in parallel'}, {'value': 'scipy', 'doc':
     "scipy's solve_ivp, the reference"}], 'low': None, 'high': None, 'at_rest_length': [], 'kernel': False,
-    'specialize': False, 'backends': {'scipy': 'slipmaps.runtime.exact.reference'}, 'roles': []}, _repeated43,
-    _repeated44], 'module': 'exact', 'summary':
+    'specialize': False, 'backends': {'scipy': 'slipmaps.runtime.exact.reference'}, 'roles': []}, _repeated36,
+    _repeated37], 'module': 'exact', 'summary':
     'the polar stance equations of motion (2)-(3) integrated with events for the bottom (k_c -> k_d), '
     'liftoff and failures: the ground truth', 'roles': [], 'specialized': [], 'choices': {}, 'extras': [],
     'requires': [], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':

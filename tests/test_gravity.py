@@ -220,48 +220,42 @@ def test_liftoff_speed_from_energy_lies_on_the_energy_level():
 
 
 # ----------------------------------------------------------------------------------------------
-# Types 0-4 are one family (derive/mapspec.py ``MapSpec.family``): one body, the impulse rule an option.
+# Types 0-4 are one family (derive/mapspec.py ``MapSpec.family``): one module, one layout, their
+# kernels one body (derive/share.py) that calls each type's impulse rule.
 
 
-def test_family_members_run_the_family_kernels_with_their_rule_fixed():
+def test_family_members_share_one_layout_and_body():
+    import inspect
+
+    from slipmaps.generated import gravity, gravity_jacobian
     from slipmaps.runtime.api.index import get
 
-    for kind, name in enumerate(TYPES):
+    layouts = set()
+    for name in TYPES:
         info = get(name)
-        assert info.fixed["rule"] == kind
-        assert {s.name for s in info.kernels.values()} == {
-            "gravity_stance",
-            "gravity_state_at",
-            "gravity_apex_return",
-            "gravity_stance_jacobian",
-            "gravity_apex_return_jacobian",
-        }
+        assert {s.module for s in info.kernels.values()} == {"gravity", "gravity_jacobian"}
+        layouts.add(info.kernels["stance"].p)
         # every slot of the shared record is filled: by an option of the map or by what it fixes
         public = {o.name for o in info.options}
         assert set(info.kernels["stance"].p) - set(P.values()) == public | set(info.fixed)
         assert not public & set(info.fixed)
-        with pytest.raises(ValueError, match="has no option 'rule'"):
-            slipmaps.stance(name, P, TOUCHDOWNS[0], rule=(kind + 1) % 5)
+        # each role kernel is an entry of a body the types share, passing the type's own rule
+        for role, spec in info.kernels.items():
+            module = gravity_jacobian if role.endswith("_jacobian") else gravity
+            source = inspect.getsource(getattr(module, spec.name).py_func)
+            assert "_shared" in source, (name, role)
+    assert len(layouts) == 1
 
 
-def test_family_rule_selects_the_types_impulse():
-    """The family kernel called with another type's rule gives that type's map: the rule is data."""
-    from slipmaps.runtime.api.calls import Call, kernel_functions
+@pytest.mark.parametrize("kind", range(5))
+def test_family_member_passes_its_own_impulse_rule(kind):
+    import inspect
 
-    td = TOUCHDOWNS[1]
-    for name in TYPES[1:]:
-        want = slipmaps.stance(name, P, td)
-        call = Call.of("gravity-type0", P, {})
-        p = call.record(call.spec("stance")).copy()
-        spec = call.spec("stance")
-        for field, code in Call.of(name, P, {}).values.items():
-            if field in spec.p:
-                p[spec.p.index(field)] = code
-        out = np.empty(len(spec.outputs))
-        status = kernel_functions(spec)[0](np.array(td, dtype=float), p, out)
-        assert status == 0 and want.status.name == "OK"
-        assert [out[spec.outputs.index(f)] for f in spec.outputs] == [want.values[f] for f in spec.outputs]
-        assert out[spec.outputs.index("P_c")] != slipmaps.stance("gravity-type0", P, td).values["P_c"]
+    from slipmaps.generated import gravity
+
+    source = inspect.getsource(getattr(gravity, f"gravity_type{kind}_stance").py_func)
+    assert f"gravity_impulse_type{kind})" in source
+    assert all(f"gravity_impulse_type{j})" not in source for j in range(5) if j != kind)
 
 
 def _member(**fields):
@@ -291,7 +285,7 @@ def test_family_member_declaration_is_checked():
     with pytest.raises(ValueError, match=r"fixes \['samples'\] it may not"):
         _member(fixed=tuple(fixed.items()) + (("samples", 3),))
     with pytest.raises(ValueError, match="outside its domain"):
-        _member(fixed=tuple({**fixed, "rule": 5}.items()))
+        _member(fixed=(("samples", 5), ("leg_length", "eq11")), options=d_gravity.MAPS[3].options)
     with pytest.raises(ValueError, match="not in"):
         _member(fixed=tuple({**fixed, "leg_length": "eq99"}.items()))
     with pytest.raises(ValueError, match="in the family's order"):
@@ -301,10 +295,8 @@ def test_family_member_declaration_is_checked():
         _member(options=tuple(other if o.name == "samples" else o for o in d_gravity.MAPS[0].options))
 
 
-def test_a_members_kernels_are_its_familys():
-    """Asked for its kernels or module, a member gives its family's (it has no body of its own)."""
+def test_a_members_kernels_are_its_own_in_its_familys_module():
     member = d_gravity.MAPS[2]
-    assert member.owner is d_gravity.FAMILY
-    assert member.stance_kernel() is d_gravity.FAMILY.stance_kernel()
-    assert member.state_at_kernel().name == "gravity_state_at"
-    assert member.module({}).name == "gravity"
+    assert member.module_name == "gravity" and member.stance_kernel().name == "gravity_type2_stance"
+    assert member.stance_kernel().module == "gravity"
+    assert [a.name for a in member.option_args()] == [o.name for o in d_gravity.FAMILY.options]

@@ -25,11 +25,12 @@ P_c = 0 (Geyer's map), stopping early when P_c moves by less than ``tol`` times 
 Every formula below is derived here (SymPy) from the model and from Geyer's derivation; the
 registry (:mod:`slipmaps.derive.equations.sec4`) compares the printed equations with them.
 
-A family module: it declares the family :data:`FAMILY` (one body, generated once as
-``generated/gravity.py`` and its Jacobians, the impulse rule chosen by the option ``rule``) and
-its members, the maps ``gravity-type0`` ... ``gravity-type4`` (:data:`MAPS`), each fixing ``rule``
-to its type and the options its rule does not read (``MapSpec.family``); type 5, a design of its
-own, is declared in :mod:`.gravity_type5` (which builds on this module's torque and energy).
+A family module: it declares the family :data:`FAMILY` (its options and module) and its members,
+the maps ``gravity-type0`` ... ``gravity-type4`` (:data:`MAPS`, ``MapSpec.family``), each fixing
+the options its rule does not read. The types differ only in the impulse rule, a kernel of its
+own per type (:func:`impulse_kernel`), so their kernels in ``generated/gravity.py`` are one body
+(derive/share.py) that each type's entry points call with its rule. Type 5, a design of its own, is
+declared in :mod:`.gravity_type5` (which builds on this module's torque and energy).
 """
 
 from __future__ import annotations
@@ -38,7 +39,8 @@ from functools import cache
 
 import sympy as sp
 
-from ..ir import Call, Field, Guard, Iterate, Stage, Step, Switch, sym
+from .. import catalog
+from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import (
@@ -357,30 +359,44 @@ def liftoff_speed_from_energy(angle: sp.Basic, momentum: sp.Basic) -> tuple[Step
     )
 
 
-_RULE = Option(
-    "rule",
-    "the impulse rule of P_c: the gravity correction type (0-4)",
-    0,
-    low=0,
-    high=4,
-    integer=True,
-)
+#: What a type's impulse rule reads (the trajectory of the current iterate, by its kernel names, the
+#: parameters and the options): the arguments of every type's impulse kernel, the same for all.
+_IMPULSE_READS = (
+    "q_th_td", "q_r_td", "q_rd_td", "q_r_lo", "m", "l0", "g_s",
+    "i_t_bottom", "i_t_stance", "i_bottom_q_th", "i_liftoff_q_th", "i_bottom_q_r",
+    "i_a", "i_b", "i_omega0_hat", "i_phase_td", "i_q_thd_eff",
+    "samples", "interval", "leg_length",
+)  # fmt: skip
 
 
-def _impulse_rules(inp: MapInputs, prefix: str) -> tuple[Step, ...]:
-    """Steps defining ``<prefix>P_new`` by the rule of the family option ``rule`` (the type)."""
-    return (
-        Switch(
-            inp.opt("rule"),
-            tuple((kind, _impulse_steps(kind, inp, prefix)) for kind in range(5)),
-            comment="the impulse rule of the correction type",
-        ),
+@cache
+def impulse_kernel(kind: int) -> Kernel:
+    """Type ``kind``'s impulse rule of P_c as a kernel of its own (inlined): the one step in which
+    the types differ, so that their stance kernels differ only in the kernel they call and
+    derive/share.py renders them as one body."""
+    inp = FAMILY.inputs(catalog.TOUCHDOWN, FAMILY.params + ("q_r_lo",))
+    docs = {a.name: a for a in FAMILY.stance_args()}
+    args = tuple(
+        docs.get(n) or Arg(sym(n), f"{n} of the current iterate's trajectory") for n in _IMPULSE_READS
+    )
+    return Kernel(
+        name=f"gravity_impulse_type{kind}",
+        summary=f"Type {kind}'s stance impulse P_c of the trajectory (report section 4.{kind + 1}).",
+        equations=tuple(e for e in MAPS[kind].equations if e not in _COMMON_EQS),
+        args=args,
+        steps=_impulse_steps(kind, inp, "i_"),
+        outputs=Group("", (Field("i_P_new", "the stance impulse of the trajectory", "N m s"),)),
+        check_inputs=False,
+        module="gravity",
+        inline=True,
+        # its callers read all of its derivatives: every type's kernels the same code
+        dense_tangent=True,
     )
 
 
-def _constant_correction():
-    """The build function of types 0-4: Geyer's map with a constant virtual gravity effect, its
-    impulse rule chosen by the family option ``rule``."""
+def _constant_correction(kind: int):
+    """The build function of type ``kind`` (0-4): Geyer's map with a constant virtual gravity effect,
+    its impulse by the type's rule (:func:`impulse_kernel`)."""
 
     def build(inp: MapInputs) -> MapBuild:
         p_td, P_c, share, ramp = sym("p_td"), sym("P_c"), sym("share"), sym("ramp")
@@ -405,7 +421,14 @@ def _constant_correction():
                 state=((P_c, sp.S.Zero),),
                 # the trajectory at every iterate, the final one included (visible after the loop)
                 evaluate=_trajectory("i_", p_td + share * P_c),
-                body=_impulse_rules(inp, "i_"),
+                body=(
+                    Call(
+                        impulse_kernel(kind),
+                        {n: sym(n) for n in _IMPULSE_READS},
+                        {"i_P_new": "i_P_new"},
+                        comment="the type's impulse rule",
+                    ),
+                ),
                 update=(sym("i_P_new"),),
                 max_iter=inp.opt("iterations"),
                 tol=inp.opt("tol"),
@@ -473,8 +496,8 @@ _NOTES = (
 )
 _PARAMS, _REQUIRES = ("m", "l0", "k", "g_s"), ("constant_stiffness",)
 
-#: The family of types 0-4: one body, the impulse rule chosen by the option ``rule``; each type is a
-#: member map (:data:`MAPS`) that fixes ``rule`` and the options its rule does not read.
+#: The family of types 0-4: the options every type's kernels take and their module; each type is a
+#: member map (:data:`MAPS`) that fixes the options its rule does not read.
 FAMILY = MapSpec(
     name="gravity",
     title="Gravity corrections types 0-4",
@@ -482,18 +505,17 @@ FAMILY = MapSpec(
     equations=tuple(str(e) for e in range(46, 78)),
     params=_PARAMS,
     requires=_REQUIRES,
-    build=_constant_correction(),
+    build=_constant_correction(0),
     options=(
         _READING,
         _SAMPLES,
         _INTERVAL,
         _LEG_LENGTH,
-        _RULE,
         iterations_option(100),
         tol_option(1e-12),
     ),
     extras=_EXTRAS,
-    summary="P_c by the impulse rule of type 0-4 (the member maps gravity-type0 ... gravity-type4)",
+    summary="P_c by the impulse rule of its type (the member maps gravity-type0 ... gravity-type4)",
     notes=_NOTES,
 )
 #: The value a member fixes an option its rule does not read to (any valid one).
@@ -516,14 +538,14 @@ def _spec(
         equations=tuple(sorted(_COMMON_EQS + eqs, key=int)),
         params=_PARAMS,
         requires=_REQUIRES,
-        build=FAMILY.build,
+        build=_constant_correction(kind),
         options=options,
         extras=_EXTRAS,
         summary=summary,
         notes=_NOTES,
         roles=("yu-target",) + roles,
         family=FAMILY,
-        fixed=(("rule", kind),) + tuple((n, v) for n, v in _UNREAD.items() if n not in public),
+        fixed=tuple((n, v) for n, v in _UNREAD.items() if n not in public),
     )
 
 
