@@ -184,7 +184,12 @@ def share_bodies(kernels: list[dict]) -> list[dict]:
         if not (callees or constants) or len(constants) > MAX_CONSTANTS:
             continue
         first = members[0][0]
-        base = _common_prefix(k["name"] for k, _, _ in members) or first["name"]
+        names = [k["name"] for k, _, _ in members]
+        # the common prefix, and the common suffix where the names differ in the middle (a family's
+        # members: gravity_type<k>_stance -> gravity_stance_shared)
+        base = (
+            "_".join(part for part in (_common_prefix(names), _common_suffix(names)) if part) or first["name"]
+        )
         name = base + SUFFIX
         while name in taken:
             name += "_"

@@ -292,6 +292,9 @@ class Differentiator:
             seeds = {a: {w: sp.S.One if a == w else sp.S.Zero for w in wrt} for a in wrt}
             if public is None:
                 name = f"{kernel.name}_jac" + ("" if wrt == kernel.arg_names else "_" + "_".join(wrt))
+                if len(name) > MAX_NAME:  # the arguments by a digest: a call's line stays in the limit
+                    digest = hashlib.sha256(repr(wrt).encode()).hexdigest()[:6]
+                    name = f"{kernel.name}_jac{len(wrt)}_{digest}"
                 summary = (
                     f"{kernel.summary.rstrip('.')}, and the derivatives of its outputs with respect to "
                     f"{', '.join(wrt)}."
@@ -489,6 +492,10 @@ _J = "j"
 #: ``per_direction=False``.
 LOOPED_SIZE = 20
 
+
+#: A Jacobian kernel's name lists the arguments it differentiates by up to this many characters;
+#: a longer one names them by a digest (``<kernel>_jac<count>_<digest>``).
+MAX_NAME = 80
 
 #: A per-choice derivative kernel's tail of at least this many assignments is shared
 #: (:meth:`Differentiator._thin`).

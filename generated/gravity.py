@@ -88,7 +88,7 @@ def gravity_impulse_type0(_a):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def gravity_shared(x, p, out, gravity_impulse):
+def gravity_stance_shared(x, p, out, gravity_impulse):
     """Gravity correction type 0 (leg length l0): touchdown state -> bottom and liftoff states.
 
     Report equations: 46, 47, 48, 49, 50, 51.
@@ -247,7 +247,7 @@ def gravity_type0_stance(x, p, out):
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type0.
+    Runs the shared body :func:`gravity_stance_shared` with gravity_impulse_type0.
 
     Geyer et al.'s map (3.1) run with a corrected angular momentum; see the module docstring of
     derive/maps/gravity.py and docs/gravity.md for the two readings of (50).
@@ -294,7 +294,7 @@ def gravity_type0_stance(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return gravity_shared(x, p, out, gravity_impulse_type0)
+    return gravity_stance_shared(x, p, out, gravity_impulse_type0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -307,7 +307,7 @@ def gravity_type0_stance_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def gravity_shared_(x, p, out, gravity_impulse):
+def gravity_state_at_shared(x, p, out, gravity_impulse):
     """Gravity correction type 0 (leg length l0): the polar state a time t after touchdown.
 
     Report equations: 46, 47, 48, 49, 50, 51.
@@ -443,7 +443,7 @@ def gravity_type0_state_at(x, p, out):
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_impulse_type0.
+    Runs the shared body :func:`gravity_state_at_shared` with gravity_impulse_type0.
 
     Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
     p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, iterations, tol); writes
@@ -480,7 +480,7 @@ def gravity_type0_state_at(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_impulse_type0)
+    return gravity_state_at_shared(x, p, out, gravity_impulse_type0)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -493,7 +493,7 @@ def gravity_type0_state_at_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def gravity_shared__(x, p, out, gravity_stance):
+def gravity_apex_return_shared(x, p, out, gravity_stance):
     """Apex-return map: exact flights, stance by Gravity correction type 0 (leg length l0).
 
     Report equations: 46, 47, 48, 49, 50, 51.
@@ -577,7 +577,7 @@ def gravity_type0_apex_return(x, p, out):
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    Runs the shared body :func:`gravity_shared__` with gravity_type0_stance.
+    Runs the shared body :func:`gravity_apex_return_shared` with gravity_type0_stance.
 
     Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, iterations, tol); writes
@@ -633,7 +633,7 @@ def gravity_type0_apex_return(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return gravity_shared__(x, p, out, gravity_type0_stance)
+    return gravity_apex_return_shared(x, p, out, gravity_type0_stance)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -680,11 +680,11 @@ def gravity_type1_stance(x, p, out):
 
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type1. Arguments, returns
-    and status: those of :func:`gravity_type0_stance`.
+    Runs the shared body :func:`gravity_stance_shared` with gravity_impulse_type1. Arguments,
+    returns and status: those of :func:`gravity_type0_stance`.
     """
     # Total ops: 0
-    return gravity_shared(x, p, out, gravity_impulse_type1)
+    return gravity_stance_shared(x, p, out, gravity_impulse_type1)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -702,11 +702,11 @@ def gravity_type1_state_at(x, p, out):
 
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_impulse_type1. Arguments, returns
-    and status: those of :func:`gravity_type0_state_at`.
+    Runs the shared body :func:`gravity_state_at_shared` with gravity_impulse_type1. Arguments,
+    returns and status: those of :func:`gravity_type0_state_at`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_impulse_type1)
+    return gravity_state_at_shared(x, p, out, gravity_impulse_type1)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -724,11 +724,11 @@ def gravity_type1_apex_return(x, p, out):
 
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
-    Runs the shared body :func:`gravity_shared__` with gravity_type1_stance. Arguments, returns
-    and status: those of :func:`gravity_type0_apex_return`.
+    Runs the shared body :func:`gravity_apex_return_shared` with gravity_type1_stance.
+    Arguments, returns and status: those of :func:`gravity_type0_apex_return`.
     """
     # Total ops: 0
-    return gravity_shared__(x, p, out, gravity_type1_stance)
+    return gravity_apex_return_shared(x, p, out, gravity_type1_stance)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -796,11 +796,11 @@ def gravity_type2_stance(x, p, out):
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type2. Arguments, returns
-    and status: those of :func:`gravity_type0_stance`.
+    Runs the shared body :func:`gravity_stance_shared` with gravity_impulse_type2. Arguments,
+    returns and status: those of :func:`gravity_type0_stance`.
     """
     # Total ops: 0
-    return gravity_shared(x, p, out, gravity_impulse_type2)
+    return gravity_stance_shared(x, p, out, gravity_impulse_type2)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -818,11 +818,11 @@ def gravity_type2_state_at(x, p, out):
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_impulse_type2. Arguments, returns
-    and status: those of :func:`gravity_type0_state_at`.
+    Runs the shared body :func:`gravity_state_at_shared` with gravity_impulse_type2. Arguments,
+    returns and status: those of :func:`gravity_type0_state_at`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_impulse_type2)
+    return gravity_state_at_shared(x, p, out, gravity_impulse_type2)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -840,11 +840,11 @@ def gravity_type2_apex_return(x, p, out):
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
-    Runs the shared body :func:`gravity_shared__` with gravity_type2_stance. Arguments, returns
-    and status: those of :func:`gravity_type0_apex_return`.
+    Runs the shared body :func:`gravity_apex_return_shared` with gravity_type2_stance.
+    Arguments, returns and status: those of :func:`gravity_type0_apex_return`.
     """
     # Total ops: 0
-    return gravity_shared__(x, p, out, gravity_type2_stance)
+    return gravity_apex_return_shared(x, p, out, gravity_type2_stance)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -892,11 +892,11 @@ def gravity_type3_stance(x, p, out):
 
     Report equations: 46, 47, 48, 50, 65, 66.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type3. Arguments, returns
-    and status: those of :func:`gravity_type0_stance`.
+    Runs the shared body :func:`gravity_stance_shared` with gravity_impulse_type3. Arguments,
+    returns and status: those of :func:`gravity_type0_stance`.
     """
     # Total ops: 0
-    return gravity_shared(x, p, out, gravity_impulse_type3)
+    return gravity_stance_shared(x, p, out, gravity_impulse_type3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -914,11 +914,11 @@ def gravity_type3_state_at(x, p, out):
 
     Report equations: 46, 47, 48, 50, 65, 66.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_impulse_type3. Arguments, returns
-    and status: those of :func:`gravity_type0_state_at`.
+    Runs the shared body :func:`gravity_state_at_shared` with gravity_impulse_type3. Arguments,
+    returns and status: those of :func:`gravity_type0_state_at`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_impulse_type3)
+    return gravity_state_at_shared(x, p, out, gravity_impulse_type3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -936,11 +936,11 @@ def gravity_type3_apex_return(x, p, out):
 
     Report equations: 46, 47, 48, 50, 65, 66.
 
-    Runs the shared body :func:`gravity_shared__` with gravity_type3_stance. Arguments, returns
-    and status: those of :func:`gravity_type0_apex_return`.
+    Runs the shared body :func:`gravity_apex_return_shared` with gravity_type3_stance.
+    Arguments, returns and status: those of :func:`gravity_type0_apex_return`.
     """
     # Total ops: 0
-    return gravity_shared__(x, p, out, gravity_type3_stance)
+    return gravity_apex_return_shared(x, p, out, gravity_type3_stance)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1066,11 +1066,11 @@ def gravity_type4_stance(x, p, out):
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type4. Arguments, returns
-    and status: those of :func:`gravity_type0_stance`.
+    Runs the shared body :func:`gravity_stance_shared` with gravity_impulse_type4. Arguments,
+    returns and status: those of :func:`gravity_type0_stance`.
     """
     # Total ops: 0
-    return gravity_shared(x, p, out, gravity_impulse_type4)
+    return gravity_stance_shared(x, p, out, gravity_impulse_type4)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1088,11 +1088,11 @@ def gravity_type4_state_at(x, p, out):
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_impulse_type4. Arguments, returns
-    and status: those of :func:`gravity_type0_state_at`.
+    Runs the shared body :func:`gravity_state_at_shared` with gravity_impulse_type4. Arguments,
+    returns and status: those of :func:`gravity_type0_state_at`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_impulse_type4)
+    return gravity_state_at_shared(x, p, out, gravity_impulse_type4)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1110,11 +1110,11 @@ def gravity_type4_apex_return(x, p, out):
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
-    Runs the shared body :func:`gravity_shared__` with gravity_type4_stance. Arguments, returns
-    and status: those of :func:`gravity_type0_apex_return`.
+    Runs the shared body :func:`gravity_apex_return_shared` with gravity_type4_stance.
+    Arguments, returns and status: those of :func:`gravity_type0_apex_return`.
     """
     # Total ops: 0
-    return gravity_shared__(x, p, out, gravity_type4_stance)
+    return gravity_apex_return_shared(x, p, out, gravity_type4_stance)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

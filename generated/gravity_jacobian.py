@@ -33,7 +33,7 @@ _NAN14 = (NAN,) * 14
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type0_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff(_a):
+def gravity_impulse_type0_jac13_f024d3(_a):
     """Type 0's stance impulse P_c of the trajectory (report section 4.1), and the derivatives of its outputs
     with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
     i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
@@ -90,17 +90,17 @@ def gravity_impulse_type0_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bot
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def gravity_shared(x, p, out, gravity_impulse_jac):
+def gravity_stance_jacobian_shared(x, p, out, gravity_impulse_jac13):
     """Gravity correction type 0 (leg length l0): stance outputs and their derivatives with respect to the
     touchdown state and the stiffness.
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    The body that 5 kernels share, each passing the kernel it calls as gravity_impulse_jac
+    The body that 5 kernels share, each passing the kernel it calls as gravity_impulse_jac13
     (derive/share.py): gravity_{type0_stance_jacobian, type1_stance_jacobian,
     type2_stance_jacobian, type3_stance_jacobian, type4_stance_jacobian}.
 
-    Arguments, returns and status: those of the kernels, then gravity_impulse_jac.
+    Arguments, returns and status: those of the kernels, then gravity_impulse_jac13.
     """
     # Total ops: 410
     (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
@@ -337,7 +337,7 @@ def gravity_shared(x, p, out, gravity_impulse_jac):
             _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_th_td, q_r_td,
             q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th, i_bottom_q_r,
             i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval, leg_length,)
-        _c2 = gravity_impulse_jac(_a2)
+        _c2 = gravity_impulse_jac13(_a2)
         if _c2[14] != STATUS_OK:
             return fail(out, _c2[14])
         i_P_new = _c2[0]
@@ -533,9 +533,8 @@ def gravity_type0_stance_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type0_jac_q_th_td_q_r_td_q_
-    rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i
-    _phase_td_i_q_thd_eff.
+    Runs the shared body :func:`gravity_stance_jacobian_shared` with
+    gravity_impulse_type0_jac13_f024d3.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -555,8 +554,7 @@ def gravity_type0_stance_jacobian(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return (gravity_shared(x, p, out,
-        gravity_impulse_type0_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff))
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type0_jac13_f024d3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -569,16 +567,14 @@ def gravity_type0_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type1_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff(_a):
+def gravity_impulse_type1_jac13_f024d3(_a):
     """Type 1's stance impulse P_c of the trajectory (report section 4.2), and the derivatives of its outputs
     with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
     i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
 
     Report equations: 52, 53, 54.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac_q_th_td_q_r_td_q_rd
-    _td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_p
-    hase_td_i_q_thd_eff`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
     """
     # Total ops: 59
     (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
@@ -636,14 +632,12 @@ def gravity_type1_stance_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type1_jac_q_th_td_q_r_td_q_
-    rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i
-    _phase_td_i_q_thd_eff. Arguments, returns and status: those of
+    Runs the shared body :func:`gravity_stance_jacobian_shared` with
+    gravity_impulse_type1_jac13_f024d3. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return (gravity_shared(x, p, out,
-        gravity_impulse_type1_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff))
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type1_jac13_f024d3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -656,16 +650,14 @@ def gravity_type1_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type2_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff(_a):
+def gravity_impulse_type2_jac13_f024d3(_a):
     """Type 2's stance impulse P_c of the trajectory (report section 4.3), and the derivatives of its outputs
     with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
     i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
 
     Report equations: 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac_q_th_td_q_r_td_q_rd
-    _td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_p
-    hase_td_i_q_thd_eff`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
     """
     # Total ops: 260
     (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
@@ -818,14 +810,12 @@ def gravity_type2_stance_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type2_jac_q_th_td_q_r_td_q_
-    rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i
-    _phase_td_i_q_thd_eff. Arguments, returns and status: those of
+    Runs the shared body :func:`gravity_stance_jacobian_shared` with
+    gravity_impulse_type2_jac13_f024d3. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return (gravity_shared(x, p, out,
-        gravity_impulse_type2_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff))
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type2_jac13_f024d3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -838,16 +828,14 @@ def gravity_type2_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type3_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff(_a):
+def gravity_impulse_type3_jac13_f024d3(_a):
     """Type 3's stance impulse P_c of the trajectory (report section 4.4), and the derivatives of its outputs
     with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
     i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
 
     Report equations: 65, 66.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac_q_th_td_q_r_td_q_rd
-    _td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_p
-    hase_td_i_q_thd_eff`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
     """
     # Total ops: 65
     (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
@@ -907,14 +895,12 @@ def gravity_type3_stance_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 65, 66.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type3_jac_q_th_td_q_r_td_q_
-    rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i
-    _phase_td_i_q_thd_eff. Arguments, returns and status: those of
+    Runs the shared body :func:`gravity_stance_jacobian_shared` with
+    gravity_impulse_type3_jac13_f024d3. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return (gravity_shared(x, p, out,
-        gravity_impulse_type3_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff))
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type3_jac13_f024d3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -927,16 +913,14 @@ def gravity_type3_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type4_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff(_a):
+def gravity_impulse_type4_jac13_f024d3(_a):
     """Type 4's stance impulse P_c of the trajectory (report section 4.5), and the derivatives of its outputs
     with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
     i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
 
     Report equations: 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac_q_th_td_q_r_td_q_rd
-    _td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_p
-    hase_td_i_q_thd_eff`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
     """
     # Total ops: 769
     (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
@@ -1306,14 +1290,12 @@ def gravity_type4_stance_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
-    Runs the shared body :func:`gravity_shared` with gravity_impulse_type4_jac_q_th_td_q_r_td_q_
-    rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i
-    _phase_td_i_q_thd_eff. Arguments, returns and status: those of
+    Runs the shared body :func:`gravity_stance_jacobian_shared` with
+    gravity_impulse_type4_jac13_f024d3. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return (gravity_shared(x, p, out,
-        gravity_impulse_type4_jac_q_th_td_q_r_td_q_rd_td_i_t_bottom_i_t_stance_i_bottom_q_th_i_liftoff_q_th_i_bottom_q_r_i_a_i_b_i_omega0_hat_i_phase_td_i_q_thd_eff))
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type4_jac13_f024d3)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1326,7 +1308,7 @@ def gravity_type4_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def gravity_shared_(x, p, out, gravity_stance):
+def gravity_apex_return_jacobian_shared(x, p, out, gravity_stance):
     """Apex-return map by Gravity correction type 0 (leg length l0), and its derivatives with respect to the
     apex, the touchdown angle and the stiffness.
 
@@ -1604,7 +1586,8 @@ def gravity_type0_apex_return_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_type0_stance_jacobian.
+    Runs the shared body :func:`gravity_apex_return_jacobian_shared` with
+    gravity_type0_stance_jacobian.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -1624,7 +1607,7 @@ def gravity_type0_apex_return_jacobian(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_type0_stance_jacobian)
+    return gravity_apex_return_jacobian_shared(x, p, out, gravity_type0_stance_jacobian)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1643,11 +1626,12 @@ def gravity_type1_apex_return_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_type1_stance_jacobian. Arguments,
-    returns and status: those of :func:`gravity_type0_apex_return_jacobian`.
+    Runs the shared body :func:`gravity_apex_return_jacobian_shared` with
+    gravity_type1_stance_jacobian. Arguments, returns and status: those of
+    :func:`gravity_type0_apex_return_jacobian`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_type1_stance_jacobian)
+    return gravity_apex_return_jacobian_shared(x, p, out, gravity_type1_stance_jacobian)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1666,11 +1650,12 @@ def gravity_type2_apex_return_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_type2_stance_jacobian. Arguments,
-    returns and status: those of :func:`gravity_type0_apex_return_jacobian`.
+    Runs the shared body :func:`gravity_apex_return_jacobian_shared` with
+    gravity_type2_stance_jacobian. Arguments, returns and status: those of
+    :func:`gravity_type0_apex_return_jacobian`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_type2_stance_jacobian)
+    return gravity_apex_return_jacobian_shared(x, p, out, gravity_type2_stance_jacobian)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1689,11 +1674,12 @@ def gravity_type3_apex_return_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 65, 66.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_type3_stance_jacobian. Arguments,
-    returns and status: those of :func:`gravity_type0_apex_return_jacobian`.
+    Runs the shared body :func:`gravity_apex_return_jacobian_shared` with
+    gravity_type3_stance_jacobian. Arguments, returns and status: those of
+    :func:`gravity_type0_apex_return_jacobian`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_type3_stance_jacobian)
+    return gravity_apex_return_jacobian_shared(x, p, out, gravity_type3_stance_jacobian)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -1712,11 +1698,12 @@ def gravity_type4_apex_return_jacobian(x, p, out):
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
-    Runs the shared body :func:`gravity_shared_` with gravity_type4_stance_jacobian. Arguments,
-    returns and status: those of :func:`gravity_type0_apex_return_jacobian`.
+    Runs the shared body :func:`gravity_apex_return_jacobian_shared` with
+    gravity_type4_stance_jacobian. Arguments, returns and status: those of
+    :func:`gravity_type0_apex_return_jacobian`.
     """
     # Total ops: 0
-    return gravity_shared_(x, p, out, gravity_type4_stance_jacobian)
+    return gravity_apex_return_jacobian_shared(x, p, out, gravity_type4_stance_jacobian)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

@@ -10,7 +10,7 @@
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_jacobian.py sha256:439802d2318bb4fa
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   gravity_jacobian.py sha256:55636d372052130a
+#   gravity_jacobian.py sha256:0977a64ac15a72c4
 #   gravity_type5_jacobian.py sha256:cd2fbda68786b927
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
@@ -286,8 +286,8 @@ def zeroth_gravity_type0_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
-        gravity_stance):
+def zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
+        l0, k_c, k_d, g_s, q_r_lo, out, gravity_stance):
     """A zeroth iterate of the iterative maps (option zeroth): a map's bottom and liftoff states with the
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
@@ -328,13 +328,14 @@ def zeroth_gravity_type1_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type1_stance_jacobian.
-    Arguments, returns and status: those of
+    Runs the shared body
+    :func:`zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared` with
+    gravity_type1_stance_jacobian. Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
-        gravity_type1_stance_jacobian))
+    return (zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared(q_r_td, q_rd_td, q_th_td,
+        q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out, gravity_type1_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")
@@ -344,13 +345,14 @@ def zeroth_gravity_type2_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type2_stance_jacobian.
-    Arguments, returns and status: those of
+    Runs the shared body
+    :func:`zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared` with
+    gravity_type2_stance_jacobian. Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
-        gravity_type2_stance_jacobian))
+    return (zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared(q_r_td, q_rd_td, q_th_td,
+        q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out, gravity_type2_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")
@@ -360,13 +362,14 @@ def zeroth_gravity_type3_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type3_stance_jacobian.
-    Arguments, returns and status: those of
+    Runs the shared body
+    :func:`zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared` with
+    gravity_type3_stance_jacobian. Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
-        gravity_type3_stance_jacobian))
+    return (zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared(q_r_td, q_rd_td, q_th_td,
+        q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out, gravity_type3_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")
@@ -376,13 +379,14 @@ def zeroth_gravity_type4_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_r
     stiffness k_c, and the derivatives of its outputs with respect to q_r_td, q_rd_td, q_th_td, q_thd_td, k_c,
     k_d.
 
-    Runs the shared body :func:`zeroth_gravity_shared` with gravity_type4_stance_jacobian.
-    Arguments, returns and status: those of
+    Runs the shared body
+    :func:`zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared` with
+    gravity_type4_stance_jacobian. Arguments, returns and status: those of
     :func:`zeroth_geyer_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d`.
     """
     # Total ops: 0
-    return (zeroth_gravity_shared(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out,
-        gravity_type4_stance_jacobian))
+    return (zeroth_gravity_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_shared(q_r_td, q_rd_td, q_th_td,
+        q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, out, gravity_type4_stance_jacobian))
 
 
 @njit(cache=True, error_model="numpy")
