@@ -1,12 +1,14 @@
 """Shared bodies: the kernels of a module that differ only in the kernels they call (and in a few
-float constants) become thin entry points of one body that takes those callees (and constants) as
-arguments.
+float constants and their comments) become thin entry points of one body that takes those callees
+(and constants) as arguments.
 
 A specialized option (:mod:`.specialize`) gives each of its choices kernels of their own, so that a
 first call compiles only the callees of the choice it runs. Many of those kernels are the same code
 but for their callees' names: the iterative maps' apex-return kernels differ only in the stance
-kernel of their zeroth iterate. :func:`share_bodies` finds them among a module's lowered kernels
-(:func:`.lower.lower`): it renders the body once, as ``<common prefix>_shared`` with the differing
+kernel of their zeroth iterate; the members of a family of maps (the gravity corrections' types 0-4,
+``MapSpec.family``) only in the kernel of their rule. :func:`share_bodies` finds them among a
+module's lowered kernels (:func:`.lower.lower`): it renders the body once, as ``<common prefix>_<common
+suffix>_shared`` (``iterative_stance_zeroth_shared``, ``gravity_stance_shared``) with the differing
 callees as trailing arguments (then the differing constants, ``constant<i>``), and makes each
 kernel an entry point that returns the shared body's result for its own callees and constants.
 The shared body is inlined at numba's IR level into each entry point (``inline="always"``), where
