@@ -211,10 +211,15 @@ class Declaration:
     def param_args(self) -> tuple[Arg, ...]:
         return tuple(catalog.PARAMS[p] for p in self.params)
 
+    def kernel_options(self) -> tuple[Option, ...]:
+        """The options the kernels take as arguments or specialize on (a family member's are its
+        family's: :attr:`~.mapspec.MapSpec.family`)."""
+        return self.options
+
     def option_args(self) -> tuple[Arg, ...]:
         """The options' arguments of the generic kernels (the specialized options' included:
         :meth:`choices` removes them)."""
-        return tuple(o.arg() for o in self.options if o.kernel or o.specialize)
+        return tuple(o.arg() for o in self.kernel_options() if o.kernel or o.specialize)
 
     def p_layout(self, extra: tuple[str, ...] = ()) -> tuple[str, ...]:
         """The parameter record of every role kernel of this declaration (:class:`~.ir.Layout`'s
@@ -274,7 +279,7 @@ class Declaration:
         return Inputs(
             state=tuple(a.symbol for a in state),
             params={p: catalog.PARAMS[p].symbol for p in params},
-            options={o.name: o for o in self.options},
+            options={o.name: o for o in self.kernel_options()},
         )
 
     def row(self, **extra) -> dict:

@@ -138,16 +138,6 @@ class MapSpec(Declaration):
         every member's kernels have one layout and one code), else the map's."""
         return (self.family or self).options
 
-    def option_args(self) -> tuple[Arg, ...]:
-        return tuple(o.arg() for o in self.kernel_options() if o.kernel or o.specialize)
-
-    def inputs(self, state, params) -> Inputs:
-        return Inputs(
-            state=tuple(a.symbol for a in state),
-            params={p: catalog.PARAMS[p].symbol for p in params},
-            options={o.name: o for o in self.kernel_options()},
-        )
-
     def fixed_codes(self) -> dict[str, float]:
         """The kernel arguments of the family's options this member fixes, by name."""
         family = {o.name: o for o in self.kernel_options()}
@@ -421,7 +411,7 @@ class MapSpec(Declaration):
     def index_row(self, flight_kernels: Mapping[str, Kernel]) -> dict:
         """The map's row of the generated index: what ``slipmaps maps`` lists, and every kernel's
         calling convention by role (:meth:`~.ir.Kernel.signature`), which the runtime fills by name.
-        A family member's kernels are its family's, and its row says which options it ``fixed``."""
+        A family member's row also says which of the family's options it ``fixed``."""
         stance, state_at = self._stance_kernel(), self.state_at_kernel({})
         apex = self.apex_return_kernel(flight_kernels, {})
         jac_module = f"{self.module_name}_jacobian"

@@ -258,7 +258,7 @@ def intern_repeats(tables: dict, prefix: str = "_repeated", least: int = 120) ->
     """``tables`` (name -> plain data) as a list of module constants in which every list or dict
     that occurs more than once and takes at least ``least`` characters is written once, as a
     constant ``<prefix><i>`` defined before its first use, and referenced (:class:`Ref`) elsewhere:
-    the index's repeated layouts and a family's kernels, published once. Deterministic: constants
+    the index's repeated layouts and options, published once. Deterministic: constants
     are numbered in the order of first use, a table's fields in their order."""
     counts: dict[str, int] = {}
 

@@ -12,7 +12,7 @@ The runtime API (``slipmaps.maps()``, ``slipmaps.stance`` ...), the command line
 run over every map and the benchmark read this module; nothing else lists the maps or the output
 layouts. ``MAPS`` rows: name, title, report section, equations, requirements, parameters,
 options (kind, default, choices), generated module and kernel names, argument orders, extras.
-A list or dict the tables repeat (a layout, an option, a family's kernels) is written once, as
+A list or dict the tables repeat (a layout, an option) is written once, as
 ``_repeated<i>`` before its first use, and named where it recurs (derive/wrap.py,
 ``intern_repeats``): the same object, which no reader modifies.
 """
