@@ -39,37 +39,37 @@ def gravity_impulse_type0(_a):
     Report equations: 49, 51.
 
     Arguments:
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        i_t_bottom: i_t_bottom of the current iterate's trajectory
-        i_t_stance: i_t_stance of the current iterate's trajectory
-        i_bottom_q_th: i_bottom_q_th of the current iterate's trajectory
-        i_liftoff_q_th: i_liftoff_q_th of the current iterate's trajectory
-        i_bottom_q_r: i_bottom_q_r of the current iterate's trajectory
-        i_a: i_a of the current iterate's trajectory
-        i_b: i_b of the current iterate's trajectory
-        i_omega0_hat: i_omega0_hat of the current iterate's trajectory
-        i_phase_td: i_phase_td of the current iterate's trajectory
-        i_q_thd_eff: i_q_thd_eff of the current iterate's trajectory
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
             bottom) in [2, 3]
         interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
             eq21, 2 = eq23
+        i_a: i_a of the current iterate's trajectory
+        i_b: i_b of the current iterate's trajectory
+        i_bottom_q_r: i_bottom_q_r of the current iterate's trajectory
+        i_bottom_q_th: i_bottom_q_th of the current iterate's trajectory
+        i_liftoff_q_th: i_liftoff_q_th of the current iterate's trajectory
+        i_omega0_hat: i_omega0_hat of the current iterate's trajectory
+        i_phase_td: i_phase_td of the current iterate's trajectory
+        i_q_thd_eff: i_q_thd_eff of the current iterate's trajectory
+        i_t_bottom: i_t_bottom of the current iterate's trajectory
+        i_t_stance: i_t_stance of the current iterate's trajectory
 
     Returns a tuple:
         i_P_new: the stance impulse of the trajectory [N m s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 21
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (48) with 2 or 3 samples
     if samples == 2.0:
@@ -190,9 +190,9 @@ def gravity_stance_shared(x, p, out, gravity_impulse):
         # the type's impulse rule
         _a2 = carray(stack(20), 20)
         (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_th_td, q_r_td,
-            q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th, i_bottom_q_r,
-            i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval, leg_length,)
+            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_r_td, q_rd_td,
+            q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r, i_bottom_q_th,
+            i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,)
         _c2 = gravity_impulse(_a2)
         if _c2[1] != STATUS_OK:
             return fail(out, _c2[1])
@@ -410,9 +410,9 @@ def gravity_state_at_shared(x, p, out, gravity_impulse):
         # the type's impulse rule
         _a2 = carray(stack(20), 20)
         (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_th_td, q_r_td,
-            q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th, i_bottom_q_r,
-            i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval, leg_length,)
+            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_r_td, q_rd_td,
+            q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r, i_bottom_q_th,
+            i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,)
         _c2 = gravity_impulse(_a2)
         if _c2[1] != STATUS_OK:
             return fail(out, _c2[1])
@@ -654,9 +654,9 @@ def gravity_impulse_type1(_a):
     Arguments, returns and status: those of :func:`gravity_impulse_type0`.
     """
     # Total ops: 27
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (48) with 2 or 3 samples
     if samples == 2.0:
@@ -749,9 +749,9 @@ def gravity_impulse_type2(_a):
     Arguments, returns and status: those of :func:`gravity_impulse_type0`.
     """
     # Total ops: 84
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # average leg length, eqs (55)-(61) / (67)-(75)
     if leg_length == 0.0:
@@ -865,9 +865,9 @@ def gravity_impulse_type3(_a):
     Arguments, returns and status: those of :func:`gravity_impulse_type0`.
     """
     # Total ops: 28
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (65)
     if interval == 0.0:
@@ -961,9 +961,9 @@ def gravity_impulse_type4(_a):
     Arguments, returns and status: those of :func:`gravity_impulse_type0`.
     """
     # Total ops: 245
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (76)
     if interval == 0.0:

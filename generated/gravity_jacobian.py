@@ -33,10 +33,10 @@ _NAN14 = (NAN,) * 14
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type0_jac13_f024d3(_a):
+def gravity_impulse_type0_jac13_8638ac(_a):
     """Type 0's stance impulse P_c of the trajectory (report section 4.1), and the derivatives of its outputs
-    with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-    i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
+    with respect to q_r_td, q_rd_td, q_th_td, i_a, i_b, i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th,
+    i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance.
 
     Report equations: 49, 51.
 
@@ -47,15 +47,15 @@ def gravity_impulse_type0_jac13_f024d3(_a):
 
     Returns a tuple:
         <output>: each output of :func:`gravity.gravity_impulse_type0`, in its order
-        d_<output>__<argument>: d output / d argument for each output above and argument q_th_td, q_r_td,
-            q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th, i_bottom_q_r, i_a, i_b,
-            i_omega0_hat, i_phase_td, i_q_thd_eff (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, i_a, i_b, i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td,
+            i_q_thd_eff, i_t_bottom, i_t_stance (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 41
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (48) with 2 or 3 samples
     if samples == 2.0:
@@ -66,8 +66,8 @@ def gravity_impulse_type0_jac13_f024d3(_a):
         i_P_new = _x3*(_x1 + _x2)
         _x4 = _x0*_x3
         d_i_P_new__q_th_td = _x4*math.cos(q_th_td)
-        d_i_P_new__i_t_stance = (0.5)*_x1 + (0.5)*_x2
         d_i_P_new__i_liftoff_q_th = _x4*math.cos(i_liftoff_q_th)
+        d_i_P_new__i_t_stance = (0.5)*_x1 + (0.5)*_x2
         # tangents as every branch names them
         d_i_P_new__i_bottom_q_th = 0.0
     elif samples == 3.0:
@@ -79,14 +79,14 @@ def gravity_impulse_type0_jac13_f024d3(_a):
         i_P_new = _x9*(_x6 + _x7 + _x8)
         _x10 = _x5*_x9
         d_i_P_new__q_th_td = _x10*math.cos(q_th_td)
-        d_i_P_new__i_t_stance = (0.3333333333333333)*_x6 + (0.3333333333333333)*_x7 + (0.3333333333333333)*_x8
         d_i_P_new__i_bottom_q_th = _x10*math.cos(i_bottom_q_th)
         d_i_P_new__i_liftoff_q_th = _x10*math.cos(i_liftoff_q_th)
+        d_i_P_new__i_t_stance = (0.3333333333333333)*_x6 + (0.3333333333333333)*_x7 + (0.3333333333333333)*_x8
     else:
         return _NAN14 + (STATUS_INVALID_INPUT,)
     # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, d_i_P_new__q_th_td, 0.0, 0.0, 0.0, d_i_P_new__i_t_stance, d_i_P_new__i_bottom_q_th,
-        d_i_P_new__i_liftoff_q_th, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, STATUS_OK)
+    return (i_P_new, 0.0, 0.0, d_i_P_new__q_th_td, 0.0, 0.0, 0.0, d_i_P_new__i_bottom_q_th,
+        d_i_P_new__i_liftoff_q_th, 0.0, 0.0, 0.0, 0.0, d_i_P_new__i_t_stance, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -334,26 +334,26 @@ def gravity_stance_jacobian_shared(x, p, out, gravity_impulse_jac13):
         # the type's impulse rule
         _a2 = carray(stack(20), 20)
         (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_th_td, q_r_td,
-            q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th, i_bottom_q_r,
-            i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval, leg_length,)
+            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_r_td, q_rd_td,
+            q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r, i_bottom_q_th,
+            i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,)
         _c2 = gravity_impulse_jac13(_a2)
         if _c2[14] != STATUS_OK:
             return fail(out, _c2[14])
         i_P_new = _c2[0]
-        _j_i_P_new__q_th_td = _c2[1]
-        _j_i_P_new__q_r_td = _c2[2]
-        _j_i_P_new__q_rd_td = _c2[3]
-        _j_i_P_new__i_t_bottom = _c2[4]
-        _j_i_P_new__i_t_stance = _c2[5]
-        _j_i_P_new__i_bottom_q_th = _c2[6]
-        _j_i_P_new__i_liftoff_q_th = _c2[7]
-        _j_i_P_new__i_bottom_q_r = _c2[8]
-        _j_i_P_new__i_a = _c2[9]
-        _j_i_P_new__i_b = _c2[10]
-        _j_i_P_new__i_omega0_hat = _c2[11]
-        _j_i_P_new__i_phase_td = _c2[12]
-        _j_i_P_new__i_q_thd_eff = _c2[13]
+        _j_i_P_new__q_r_td = _c2[1]
+        _j_i_P_new__q_rd_td = _c2[2]
+        _j_i_P_new__q_th_td = _c2[3]
+        _j_i_P_new__i_a = _c2[4]
+        _j_i_P_new__i_b = _c2[5]
+        _j_i_P_new__i_bottom_q_r = _c2[6]
+        _j_i_P_new__i_bottom_q_th = _c2[7]
+        _j_i_P_new__i_liftoff_q_th = _c2[8]
+        _j_i_P_new__i_omega0_hat = _c2[9]
+        _j_i_P_new__i_phase_td = _c2[10]
+        _j_i_P_new__i_q_thd_eff = _c2[11]
+        _j_i_P_new__i_t_bottom = _c2[12]
+        _j_i_P_new__i_t_stance = _c2[13]
         # next values
         P_c__next = i_P_new
         # the next state's tangents, once per direction
@@ -534,7 +534,7 @@ def gravity_type0_stance_jacobian(x, p, out):
     Report equations: 46, 47, 48, 49, 50, 51.
 
     Runs the shared body :func:`gravity_stance_jacobian_shared` with
-    gravity_impulse_type0_jac13_f024d3.
+    gravity_impulse_type0_jac13_8638ac.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -554,7 +554,7 @@ def gravity_type0_stance_jacobian(x, p, out):
             (returned).
     """
     # Total ops: 0
-    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type0_jac13_f024d3)
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type0_jac13_8638ac)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -567,19 +567,19 @@ def gravity_type0_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type1_jac13_f024d3(_a):
+def gravity_impulse_type1_jac13_8638ac(_a):
     """Type 1's stance impulse P_c of the trajectory (report section 4.2), and the derivatives of its outputs
-    with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-    i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
+    with respect to q_r_td, q_rd_td, q_th_td, i_a, i_b, i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th,
+    i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance.
 
     Report equations: 52, 53, 54.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_8638ac`.
     """
     # Total ops: 59
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (48) with 2 or 3 samples
     if samples == 2.0:
@@ -593,10 +593,10 @@ def gravity_impulse_type1_jac13_f024d3(_a):
         i_P_new = _x6*(_x3 + _x5)
         _x7 = _x2*_x6
         d_i_P_new__q_th_td = _x7*math.cos(q_th_td)
-        d_i_P_new__i_t_stance = (0.5)*_x3 + (0.5)*_x5
-        d_i_P_new__i_liftoff_q_th = _x7*math.cos(i_liftoff_q_th)
         _x8 = (0.5)*_x1
         d_i_P_new__i_bottom_q_r = _x6*(_x0*_x8 + _x4*_x8)
+        d_i_P_new__i_liftoff_q_th = _x7*math.cos(i_liftoff_q_th)
+        d_i_P_new__i_t_stance = (0.5)*_x3 + (0.5)*_x5
         # tangents as every branch names them
         d_i_P_new__i_bottom_q_th = 0.0
     elif samples == 3.0:
@@ -612,17 +612,18 @@ def gravity_impulse_type1_jac13_f024d3(_a):
         i_P_new = _x17*(_x12 + _x14 + _x16)
         _x18 = _x11*_x17
         d_i_P_new__q_th_td = _x18*math.cos(q_th_td)
-        d_i_P_new__i_t_stance = ((0.3333333333333333)*_x12 + (0.3333333333333333)*_x14
-            + (0.3333333333333333)*_x16)
-        d_i_P_new__i_bottom_q_th = _x18*math.cos(i_bottom_q_th)
-        d_i_P_new__i_liftoff_q_th = _x18*math.cos(i_liftoff_q_th)
         _x19 = (0.5)*_x10
         d_i_P_new__i_bottom_q_r = _x17*(_x13*_x19 + _x15*_x19 + _x19*_x9)
+        d_i_P_new__i_bottom_q_th = _x18*math.cos(i_bottom_q_th)
+        d_i_P_new__i_liftoff_q_th = _x18*math.cos(i_liftoff_q_th)
+        d_i_P_new__i_t_stance = ((0.3333333333333333)*_x12 + (0.3333333333333333)*_x14
+            + (0.3333333333333333)*_x16)
     else:
         return _NAN14 + (STATUS_INVALID_INPUT,)
     # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, d_i_P_new__q_th_td, 0.0, 0.0, 0.0, d_i_P_new__i_t_stance, d_i_P_new__i_bottom_q_th,
-        d_i_P_new__i_liftoff_q_th, d_i_P_new__i_bottom_q_r, 0.0, 0.0, 0.0, 0.0, 0.0, STATUS_OK)
+    return (i_P_new, 0.0, 0.0, d_i_P_new__q_th_td, 0.0, 0.0, d_i_P_new__i_bottom_q_r,
+        d_i_P_new__i_bottom_q_th, d_i_P_new__i_liftoff_q_th, 0.0, 0.0, 0.0, 0.0, d_i_P_new__i_t_stance,
+        STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -633,11 +634,11 @@ def gravity_type1_stance_jacobian(x, p, out):
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
     Runs the shared body :func:`gravity_stance_jacobian_shared` with
-    gravity_impulse_type1_jac13_f024d3. Arguments, returns and status: those of
+    gravity_impulse_type1_jac13_8638ac. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type1_jac13_f024d3)
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type1_jac13_8638ac)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -650,19 +651,19 @@ def gravity_type1_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type2_jac13_f024d3(_a):
+def gravity_impulse_type2_jac13_8638ac(_a):
     """Type 2's stance impulse P_c of the trajectory (report section 4.3), and the derivatives of its outputs
-    with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-    i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
+    with respect to q_r_td, q_rd_td, q_th_td, i_a, i_b, i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th,
+    i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance.
 
     Report equations: 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_8638ac`.
     """
     # Total ops: 260
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # average leg length, eqs (55)-(61) / (67)-(75)
     if leg_length == 0.0:
@@ -677,14 +678,14 @@ def gravity_impulse_type2_jac13_f024d3(_a):
         _x8 = (1.0/i_t_stance)
         _x9 = _x2*_x8*l0
         _i_L = _x7*_x9
+        _d_i_L__i_a = _x9*(_x5 - i_phase_td)
+        _d_i_L__i_b = _x9*(_x0 - _x6)
         _x10 = math.sin(_x5)
         _x11 = _x10*i_b
         _x12 = _x7*l0
-        _d_i_L__i_t_stance = -_x12*_x2*_x8**2 + _x9*(_x1*i_omega0_hat + _x11*i_omega0_hat)
-        _d_i_L__i_a = _x9*(_x5 - i_phase_td)
-        _d_i_L__i_b = _x9*(_x0 - _x6)
         _d_i_L__i_omega0_hat = -_x12*_x2**2*_x8 + _x9*(-_x1*_x3 + _x1*_x4 + _x11*i_t_stance)
         _d_i_L__i_phase_td = _x9*(_x10*i_b - i_b*math.sin(i_phase_td))
+        _d_i_L__i_t_stance = -_x12*_x2*_x8**2 + _x9*(_x1*i_omega0_hat + _x11*i_omega0_hat)
         # tangents as every branch names them
         _d_i_L__q_rd_td = 0.0
         _d_i_L__i_q_thd_eff = 0.0
@@ -702,18 +703,18 @@ def gravity_impulse_type2_jac13_f024d3(_a):
         _x23 = (1.0/i_t_stance)
         _x24 = _x22*_x23*l0
         _i_L = _x21*_x24
-        _x25 = _x14*_x19
-        _x26 = _x21*l0
-        _d_i_L__i_t_stance = (-_x22*_x23**2*_x26 + _x24*(-_x20*i_a*i_omega0_hat - _x25*i_omega0_hat
-            + i_omega0_hat*(i_a + 1.0)))
-        _x27 = (1.0/_x17)
-        _d_i_L__i_a = _x24*(-_x14 + _x18*_x27*i_a*i_b - _x19*_x20*_x27*i_a + i_omega0_hat*i_t_stance)
-        _x28 = _x18*_x20
-        _x29 = i_b**3
-        _x30 = _x27*_x29*(-_x17/_x29 + (1.0/i_b))
-        _d_i_L__i_b = _x24*(-_x18*_x30 - _x18 + _x28*_x30 + _x28)
-        _d_i_L__i_omega0_hat = (-_x22**2*_x23*_x26 + _x24*(-_x15*_x20 - _x25*i_t_stance + i_a*i_t_stance
+        _x25 = (1.0/_x17)
+        _d_i_L__i_a = _x24*(-_x14 + _x18*_x25*i_a*i_b - _x19*_x20*_x25*i_a + i_omega0_hat*i_t_stance)
+        _x26 = _x18*_x20
+        _x27 = i_b**3
+        _x28 = _x25*_x27*(-_x17/_x27 + (1.0/i_b))
+        _d_i_L__i_b = _x24*(-_x18*_x28 - _x18 + _x26*_x28 + _x26)
+        _x29 = _x14*_x19
+        _x30 = _x21*l0
+        _d_i_L__i_omega0_hat = (-_x22**2*_x23*_x30 + _x24*(-_x15*_x20 - _x29*i_t_stance + i_a*i_t_stance
             + i_t_stance))
+        _d_i_L__i_t_stance = (-_x22*_x23**2*_x30 + _x24*(-_x20*i_a*i_omega0_hat - _x29*i_omega0_hat
+            + i_omega0_hat*(i_a + 1.0)))
         # tangents as every branch names them
         _d_i_L__q_rd_td = 0.0
         _d_i_L__i_phase_td = 0.0
@@ -737,13 +738,13 @@ def gravity_impulse_type2_jac13_f024d3(_a):
         _i_L = _x41*_x44
         _x45 = _x36*i_omega0_hat
         _d_i_L__q_rd_td = _x44*(-_x45 + i_omega0_hat)
-        _d_i_L__i_t_stance = (-_x41*_x42*_x43**2 + _x44*(-_x34*_x45 + _x36*g_s*i_omega0_hat
-            - i_omega0_hat*(-_x31*_x33 - _x34 - _x38 + g_s)))
         _x46 = 2.0*l0
         _x47 = _x32*_x46
         _d_i_L__i_omega0_hat = (-3.0*_x41*_x43*_x48**4 + _x44*(_x35*_x36 - _x35 - _x36*_x40 - _x37 + _x39
             + _x40 - i_omega0_hat*(-_x33*i_t_stance*q_rd_td - _x47) + q_rd_td))
         _d_i_L__i_q_thd_eff = _x44*(-_x33*_x46*i_q_thd_eff + _x47*i_q_thd_eff)
+        _d_i_L__i_t_stance = (-_x41*_x42*_x43**2 + _x44*(-_x34*_x45 + _x36*g_s*i_omega0_hat
+            - i_omega0_hat*(-_x31*_x33 - _x34 - _x38 + g_s)))
         # tangents as every branch names them
         _d_i_L__i_a = 0.0
         _d_i_L__i_b = 0.0
@@ -760,16 +761,16 @@ def gravity_impulse_type2_jac13_f024d3(_a):
         _x54 = (0.5)*i_t_stance
         i_P_new = _x54*(_x51 + _x53)
         _pd__0 = _x54*(_x50 + _x52)
+        d_i_P_new__q_rd_td = _d_i_L__q_rd_td*_pd__0
         _x55 = _i_L*_x49*_x54
         d_i_P_new__q_th_td = _x55*math.cos(q_th_td)
-        d_i_P_new__q_rd_td = _d_i_L__q_rd_td*_pd__0
-        d_i_P_new__i_t_stance = _d_i_L__i_t_stance*_pd__0 + (0.5)*_x51 + (0.5)*_x53
-        d_i_P_new__i_liftoff_q_th = _x55*math.cos(i_liftoff_q_th)
         d_i_P_new__i_a = _d_i_L__i_a*_pd__0
         d_i_P_new__i_b = _d_i_L__i_b*_pd__0
+        d_i_P_new__i_liftoff_q_th = _x55*math.cos(i_liftoff_q_th)
         d_i_P_new__i_omega0_hat = _d_i_L__i_omega0_hat*_pd__0
         d_i_P_new__i_phase_td = _d_i_L__i_phase_td*_pd__0
         d_i_P_new__i_q_thd_eff = _d_i_L__i_q_thd_eff*_pd__0
+        d_i_P_new__i_t_stance = _d_i_L__i_t_stance*_pd__0 + (0.5)*_x51 + (0.5)*_x53
         # tangents as every branch names them
         d_i_P_new__i_bottom_q_th = 0.0
     elif samples == 3.0:
@@ -783,24 +784,24 @@ def gravity_impulse_type2_jac13_f024d3(_a):
         _x63 = (0.3333333333333333)*i_t_stance
         i_P_new = _x63*(_x58 + _x60 + _x62)
         _pd__1 = _x63*(_x57 + _x59 + _x61)
+        d_i_P_new__q_rd_td = _d_i_L__q_rd_td*_pd__1
         _x64 = _i_L*_x56*_x63
         d_i_P_new__q_th_td = _x64*math.cos(q_th_td)
-        d_i_P_new__q_rd_td = _d_i_L__q_rd_td*_pd__1
-        d_i_P_new__i_t_stance = (_d_i_L__i_t_stance*_pd__1 + (0.3333333333333333)*_x58
-            + (0.3333333333333333)*_x60 + (0.3333333333333333)*_x62)
-        d_i_P_new__i_bottom_q_th = _x64*math.cos(i_bottom_q_th)
-        d_i_P_new__i_liftoff_q_th = _x64*math.cos(i_liftoff_q_th)
         d_i_P_new__i_a = _d_i_L__i_a*_pd__1
         d_i_P_new__i_b = _d_i_L__i_b*_pd__1
+        d_i_P_new__i_bottom_q_th = _x64*math.cos(i_bottom_q_th)
+        d_i_P_new__i_liftoff_q_th = _x64*math.cos(i_liftoff_q_th)
         d_i_P_new__i_omega0_hat = _d_i_L__i_omega0_hat*_pd__1
         d_i_P_new__i_phase_td = _d_i_L__i_phase_td*_pd__1
         d_i_P_new__i_q_thd_eff = _d_i_L__i_q_thd_eff*_pd__1
+        d_i_P_new__i_t_stance = (_d_i_L__i_t_stance*_pd__1 + (0.3333333333333333)*_x58
+            + (0.3333333333333333)*_x60 + (0.3333333333333333)*_x62)
     else:
         return _NAN14 + (STATUS_INVALID_INPUT,)
     # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, d_i_P_new__q_th_td, 0.0, d_i_P_new__q_rd_td, 0.0, d_i_P_new__i_t_stance,
-        d_i_P_new__i_bottom_q_th, d_i_P_new__i_liftoff_q_th, 0.0, d_i_P_new__i_a, d_i_P_new__i_b,
-        d_i_P_new__i_omega0_hat, d_i_P_new__i_phase_td, d_i_P_new__i_q_thd_eff, STATUS_OK)
+    return (i_P_new, 0.0, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__i_a, d_i_P_new__i_b, 0.0,
+        d_i_P_new__i_bottom_q_th, d_i_P_new__i_liftoff_q_th, d_i_P_new__i_omega0_hat, d_i_P_new__i_phase_td,
+        d_i_P_new__i_q_thd_eff, 0.0, d_i_P_new__i_t_stance, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -811,11 +812,11 @@ def gravity_type2_stance_jacobian(x, p, out):
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
     Runs the shared body :func:`gravity_stance_jacobian_shared` with
-    gravity_impulse_type2_jac13_f024d3. Arguments, returns and status: those of
+    gravity_impulse_type2_jac13_8638ac. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type2_jac13_f024d3)
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type2_jac13_8638ac)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -828,19 +829,19 @@ def gravity_type2_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type3_jac13_f024d3(_a):
+def gravity_impulse_type3_jac13_8638ac(_a):
     """Type 3's stance impulse P_c of the trajectory (report section 4.4), and the derivatives of its outputs
-    with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-    i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
+    with respect to q_r_td, q_rd_td, q_th_td, i_a, i_b, i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th,
+    i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance.
 
     Report equations: 65, 66.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_8638ac`.
     """
     # Total ops: 65
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (65)
     if interval == 0.0:
@@ -851,14 +852,14 @@ def gravity_impulse_type3_jac13_f024d3(_a):
         _x4 = _x3*q_r_td
         _x5 = (0.5)*i_t_stance
         i_P_new = _x5*(_x2 + _x4)
-        d_i_P_new__q_th_td = _x0*_x5*q_r_td*math.cos(q_th_td)
         d_i_P_new__q_r_td = _x3*_x5
-        d_i_P_new__i_t_stance = (0.5)*_x2 + (0.5)*_x4
+        d_i_P_new__q_th_td = _x0*_x5*q_r_td*math.cos(q_th_td)
         d_i_P_new__i_liftoff_q_th = _x1*_x5*math.cos(i_liftoff_q_th)
+        d_i_P_new__i_t_stance = (0.5)*_x2 + (0.5)*_x4
         # tangents as every branch names them
-        d_i_P_new__i_t_bottom = 0.0
-        d_i_P_new__i_bottom_q_th = 0.0
         d_i_P_new__i_bottom_q_r = 0.0
+        d_i_P_new__i_bottom_q_th = 0.0
+        d_i_P_new__i_t_bottom = 0.0
     elif interval == 1.0:
         _x6 = g_s*m
         _x7 = _x6*math.sin(i_bottom_q_th)
@@ -870,22 +871,22 @@ def gravity_impulse_type3_jac13_f024d3(_a):
         _x13 = _x12*math.sin(i_liftoff_q_th)
         _x14 = -0.5*i_t_bottom + (0.5)*i_t_stance
         i_P_new = _x11*(_x10*q_r_td + _x8) + _x14*(_x13 + _x8)
+        d_i_P_new__q_r_td = _x10*_x11
         _x15 = _x11*_x6
         d_i_P_new__q_th_td = _x15*q_r_td*math.cos(q_th_td)
-        d_i_P_new__q_r_td = _x10*_x11
-        _x16 = (0.5)*_x13
-        d_i_P_new__i_t_bottom = -_x16 + (0.5)*_x9*g_s*m*q_r_td
-        d_i_P_new__i_t_stance = _x16 + (0.5)*_x8
-        _x17 = i_bottom_q_r*math.cos(i_bottom_q_th)
-        d_i_P_new__i_bottom_q_th = _x14*_x17*_x6 + _x15*_x17
-        d_i_P_new__i_liftoff_q_th = _x12*_x14*math.cos(i_liftoff_q_th)
         d_i_P_new__i_bottom_q_r = _x11*_x7 + _x14*_x7
+        _x16 = i_bottom_q_r*math.cos(i_bottom_q_th)
+        d_i_P_new__i_bottom_q_th = _x14*_x16*_x6 + _x15*_x16
+        d_i_P_new__i_liftoff_q_th = _x12*_x14*math.cos(i_liftoff_q_th)
+        _x17 = (0.5)*_x13
+        d_i_P_new__i_t_bottom = -_x17 + (0.5)*_x9*g_s*m*q_r_td
+        d_i_P_new__i_t_stance = _x17 + (0.5)*_x8
     else:
         return _NAN14 + (STATUS_INVALID_INPUT,)
     # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, d_i_P_new__q_th_td, d_i_P_new__q_r_td, 0.0, d_i_P_new__i_t_bottom, d_i_P_new__i_t_stance,
-        d_i_P_new__i_bottom_q_th, d_i_P_new__i_liftoff_q_th, d_i_P_new__i_bottom_q_r, 0.0, 0.0, 0.0, 0.0, 0.0,
-        STATUS_OK)
+    return (i_P_new, d_i_P_new__q_r_td, 0.0, d_i_P_new__q_th_td, 0.0, 0.0, d_i_P_new__i_bottom_q_r,
+        d_i_P_new__i_bottom_q_th, d_i_P_new__i_liftoff_q_th, 0.0, 0.0, 0.0, d_i_P_new__i_t_bottom,
+        d_i_P_new__i_t_stance, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -896,11 +897,11 @@ def gravity_type3_stance_jacobian(x, p, out):
     Report equations: 46, 47, 48, 50, 65, 66.
 
     Runs the shared body :func:`gravity_stance_jacobian_shared` with
-    gravity_impulse_type3_jac13_f024d3. Arguments, returns and status: those of
+    gravity_impulse_type3_jac13_8638ac. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type3_jac13_f024d3)
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type3_jac13_8638ac)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
@@ -913,19 +914,19 @@ def gravity_type3_stance_jacobian_rows(X, P, OUT, STATUS):
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_impulse_type4_jac13_f024d3(_a):
+def gravity_impulse_type4_jac13_8638ac(_a):
     """Type 4's stance impulse P_c of the trajectory (report section 4.5), and the derivatives of its outputs
-    with respect to q_th_td, q_r_td, q_rd_td, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-    i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff.
+    with respect to q_r_td, q_rd_td, q_th_td, i_a, i_b, i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th,
+    i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance.
 
     Report equations: 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
-    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_f024d3`.
+    Arguments, returns and status: those of :func:`gravity_impulse_type0_jac13_8638ac`.
     """
-    # Total ops: 769
-    (q_th_td, q_r_td, q_rd_td, q_r_lo, m, l0, g_s, i_t_bottom, i_t_stance, i_bottom_q_th, i_liftoff_q_th,
-        i_bottom_q_r, i_a, i_b, i_omega0_hat, i_phase_td, i_q_thd_eff, samples, interval,
-        leg_length) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
+    # Total ops: 767
+    (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
         _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
     # eq (76)
     if interval == 0.0:
@@ -942,14 +943,14 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _x8 = (1.0/i_t_stance)
             _x9 = _x2*_x8*l0
             _i_L = _x7*_x9
+            _d_i_L__i_a = _x9*(_x5 - i_phase_td)
+            _d_i_L__i_b = _x9*(_x0 - _x6)
             _x10 = math.sin(_x5)
             _x11 = _x10*i_b
             _x12 = _x7*l0
-            _d_i_L__i_t_stance = -_x12*_x2*_x8**2 + _x9*(_x1*i_omega0_hat + _x11*i_omega0_hat)
-            _d_i_L__i_a = _x9*(_x5 - i_phase_td)
-            _d_i_L__i_b = _x9*(_x0 - _x6)
             _d_i_L__i_omega0_hat = -_x12*_x2**2*_x8 + _x9*(-_x1*_x3 + _x1*_x4 + _x11*i_t_stance)
             _d_i_L__i_phase_td = _x9*(_x10*i_b - i_b*math.sin(i_phase_td))
+            _d_i_L__i_t_stance = -_x12*_x2*_x8**2 + _x9*(_x1*i_omega0_hat + _x11*i_omega0_hat)
             # tangents as every branch names them
             _d_i_L__q_rd_td = 0.0
             _d_i_L__i_q_thd_eff = 0.0
@@ -967,18 +968,18 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _x23 = (1.0/i_t_stance)
             _x24 = _x22*_x23*l0
             _i_L = _x21*_x24
-            _x25 = _x14*_x19
-            _x26 = _x21*l0
-            _d_i_L__i_t_stance = (-_x22*_x23**2*_x26 + _x24*(-_x20*i_a*i_omega0_hat - _x25*i_omega0_hat
-                + i_omega0_hat*(i_a + 1.0)))
-            _x27 = (1.0/_x17)
-            _d_i_L__i_a = _x24*(-_x14 + _x18*_x27*i_a*i_b - _x19*_x20*_x27*i_a + i_omega0_hat*i_t_stance)
-            _x28 = _x18*_x20
-            _x29 = i_b**3
-            _x30 = _x27*_x29*(-_x17/_x29 + (1.0/i_b))
-            _d_i_L__i_b = _x24*(-_x18*_x30 - _x18 + _x28*_x30 + _x28)
-            _d_i_L__i_omega0_hat = (-_x22**2*_x23*_x26 + _x24*(-_x15*_x20 - _x25*i_t_stance + i_a*i_t_stance
+            _x25 = (1.0/_x17)
+            _d_i_L__i_a = _x24*(-_x14 + _x18*_x25*i_a*i_b - _x19*_x20*_x25*i_a + i_omega0_hat*i_t_stance)
+            _x26 = _x18*_x20
+            _x27 = i_b**3
+            _x28 = _x25*_x27*(-_x17/_x27 + (1.0/i_b))
+            _d_i_L__i_b = _x24*(-_x18*_x28 - _x18 + _x26*_x28 + _x26)
+            _x29 = _x14*_x19
+            _x30 = _x21*l0
+            _d_i_L__i_omega0_hat = (-_x22**2*_x23*_x30 + _x24*(-_x15*_x20 - _x29*i_t_stance + i_a*i_t_stance
                 + i_t_stance))
+            _d_i_L__i_t_stance = (-_x22*_x23**2*_x30 + _x24*(-_x20*i_a*i_omega0_hat - _x29*i_omega0_hat
+                + i_omega0_hat*(i_a + 1.0)))
             # tangents as every branch names them
             _d_i_L__q_rd_td = 0.0
             _d_i_L__i_phase_td = 0.0
@@ -1002,13 +1003,13 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _i_L = _x41*_x44
             _x45 = _x36*i_omega0_hat
             _d_i_L__q_rd_td = _x44*(-_x45 + i_omega0_hat)
-            _d_i_L__i_t_stance = (-_x41*_x42*_x43**2 + _x44*(-_x34*_x45 + _x36*g_s*i_omega0_hat
-                - i_omega0_hat*(-_x31*_x33 - _x34 - _x38 + g_s)))
             _x46 = 2.0*l0
             _x47 = _x32*_x46
             _d_i_L__i_omega0_hat = (-3.0*_x41*_x43*_x48**4 + _x44*(_x35*_x36 - _x35 - _x36*_x40 - _x37 + _x39
                 + _x40 - i_omega0_hat*(-_x33*i_t_stance*q_rd_td - _x47) + q_rd_td))
             _d_i_L__i_q_thd_eff = _x44*(-_x33*_x46*i_q_thd_eff + _x47*i_q_thd_eff)
+            _d_i_L__i_t_stance = (-_x41*_x42*_x43**2 + _x44*(-_x34*_x45 + _x36*g_s*i_omega0_hat
+                - i_omega0_hat*(-_x31*_x33 - _x34 - _x38 + g_s)))
             # tangents as every branch names them
             _d_i_L__i_a = 0.0
             _d_i_L__i_b = 0.0
@@ -1023,19 +1024,19 @@ def gravity_impulse_type4_jac13_f024d3(_a):
         _x54 = (0.5)*i_t_stance
         i_P_new = _x54*(_x51 + _x53)
         _pd__0 = _x54*(_x50 + _x52)
+        d_i_P_new__q_rd_td = _d_i_L__q_rd_td*_pd__0
         _x55 = _i_L*_x49*_x54
         d_i_P_new__q_th_td = _x55*math.cos(q_th_td)
-        d_i_P_new__q_rd_td = _d_i_L__q_rd_td*_pd__0
-        d_i_P_new__i_t_stance = _d_i_L__i_t_stance*_pd__0 + (0.5)*_x51 + (0.5)*_x53
-        d_i_P_new__i_liftoff_q_th = _x55*math.cos(i_liftoff_q_th)
         d_i_P_new__i_a = _d_i_L__i_a*_pd__0
         d_i_P_new__i_b = _d_i_L__i_b*_pd__0
+        d_i_P_new__i_liftoff_q_th = _x55*math.cos(i_liftoff_q_th)
         d_i_P_new__i_omega0_hat = _d_i_L__i_omega0_hat*_pd__0
         d_i_P_new__i_phase_td = _d_i_L__i_phase_td*_pd__0
         d_i_P_new__i_q_thd_eff = _d_i_L__i_q_thd_eff*_pd__0
+        d_i_P_new__i_t_stance = _d_i_L__i_t_stance*_pd__0 + (0.5)*_x51 + (0.5)*_x53
         # tangents as every branch names them
-        d_i_P_new__i_t_bottom = 0.0
         d_i_P_new__i_bottom_q_th = 0.0
+        d_i_P_new__i_t_bottom = 0.0
     elif interval == 1.0:
         # average leg length, eqs (55)-(61) / (67)-(75)
         if leg_length == 0.0:
@@ -1050,14 +1051,14 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _x64 = (1.0/i_t_bottom)
             _x65 = _x58*_x64*l0
             _i_L1 = _x63*_x65
+            _d_i_L1__i_a = _x65*(_x61 - i_phase_td)
+            _d_i_L1__i_b = _x65*(_x56 - _x62)
             _x66 = math.sin(_x61)
             _x67 = _x66*i_b
             _x68 = _x63*l0
-            _d_i_L1__i_t_bottom = -_x58*_x64**2*_x68 + _x65*(_x57*i_omega0_hat + _x67*i_omega0_hat)
-            _d_i_L1__i_a = _x65*(_x61 - i_phase_td)
-            _d_i_L1__i_b = _x65*(_x56 - _x62)
             _d_i_L1__i_omega0_hat = -_x58**2*_x64*_x68 + _x65*(-_x57*_x59 + _x57*_x60 + _x67*i_t_bottom)
             _d_i_L1__i_phase_td = _x65*(_x66*i_b - i_b*math.sin(i_phase_td))
+            _d_i_L1__i_t_bottom = -_x58*_x64**2*_x68 + _x65*(_x57*i_omega0_hat + _x67*i_omega0_hat)
             # tangents as every branch names them
             _d_i_L1__q_rd_td = 0.0
             _d_i_L1__i_q_thd_eff = 0.0
@@ -1075,18 +1076,18 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _x79 = (1.0/i_t_bottom)
             _x80 = _x78*_x79*l0
             _i_L1 = _x77*_x80
-            _x81 = _x70*_x75
-            _x82 = _x77*l0
-            _d_i_L1__i_t_bottom = (-_x78*_x79**2*_x82 + _x80*(-_x76*i_a*i_omega0_hat - _x81*i_omega0_hat
-                + i_omega0_hat*(i_a + 1.0)))
-            _x83 = (1.0/_x73)
-            _d_i_L1__i_a = _x80*(-_x70 + _x74*_x83*i_a*i_b - _x75*_x76*_x83*i_a + i_omega0_hat*i_t_bottom)
-            _x84 = _x74*_x76
-            _x85 = i_b**3
-            _x86 = _x83*_x85*(-_x73/_x85 + (1.0/i_b))
-            _d_i_L1__i_b = _x80*(-_x74*_x86 - _x74 + _x84*_x86 + _x84)
-            _d_i_L1__i_omega0_hat = (-_x78**2*_x79*_x82 + _x80*(-_x71*_x76 - _x81*i_t_bottom + i_a*i_t_bottom
+            _x81 = (1.0/_x73)
+            _d_i_L1__i_a = _x80*(-_x70 + _x74*_x81*i_a*i_b - _x75*_x76*_x81*i_a + i_omega0_hat*i_t_bottom)
+            _x82 = _x74*_x76
+            _x83 = i_b**3
+            _x84 = _x81*_x83*(-_x73/_x83 + (1.0/i_b))
+            _d_i_L1__i_b = _x80*(-_x74*_x84 - _x74 + _x82*_x84 + _x82)
+            _x85 = _x70*_x75
+            _x86 = _x77*l0
+            _d_i_L1__i_omega0_hat = (-_x78**2*_x79*_x86 + _x80*(-_x71*_x76 - _x85*i_t_bottom + i_a*i_t_bottom
                 + i_t_bottom))
+            _d_i_L1__i_t_bottom = (-_x78*_x79**2*_x86 + _x80*(-_x76*i_a*i_omega0_hat - _x85*i_omega0_hat
+                + i_omega0_hat*(i_a + 1.0)))
             # tangents as every branch names them
             _d_i_L1__q_rd_td = 0.0
             _d_i_L1__i_phase_td = 0.0
@@ -1110,13 +1111,13 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _i_L1 = _x100*_x97
             _x101 = _x92*i_omega0_hat
             _d_i_L1__q_rd_td = _x100*(-_x101 + i_omega0_hat)
-            _d_i_L1__i_t_bottom = (_x100*(-_x101*_x90 + _x92*g_s*i_omega0_hat - i_omega0_hat*(-_x87*_x89
-                - _x90 - _x94 + g_s)) - _x97*_x98*_x99**2)
             _x102 = 2.0*l0
             _x103 = _x102*_x88
             _d_i_L1__i_omega0_hat = (_x100*(_x91*_x92 - _x91 - _x92*_x96 - _x93 + _x95 + _x96
                 - i_omega0_hat*(-_x103 - _x89*i_t_bottom*q_rd_td) + q_rd_td) - 3.0*_x104**4*_x97*_x99)
             _d_i_L1__i_q_thd_eff = _x100*(-_x102*_x89*i_q_thd_eff + _x103*i_q_thd_eff)
+            _d_i_L1__i_t_bottom = (_x100*(-_x101*_x90 + _x92*g_s*i_omega0_hat - i_omega0_hat*(-_x87*_x89
+                - _x90 - _x94 + g_s)) - _x97*_x98*_x99**2)
             # tangents as every branch names them
             _d_i_L1__i_a = 0.0
             _d_i_L1__i_b = 0.0
@@ -1139,18 +1140,18 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _x116 = (1.0/_x115)
             _x117 = _x105*_x116*l0
             _i_L2 = _x114*_x117
-            _x118 = _x110*i_omega0_hat
-            _x119 = i_b*math.sin(_x108)
-            _x120 = _x114*l0
-            _x121 = _x105*_x116**2*_x120
-            _d_i_L2__i_t_bottom = _x117*(-_x118 - _x119*i_omega0_hat) + _x121
-            _x122 = math.sin(_x112)
-            _d_i_L2__i_t_stance = _x117*(_x118 + _x122*i_b*i_omega0_hat) - _x121
             _d_i_L2__i_a = _x117*(-_x108 + _x111*i_omega0_hat)
             _d_i_L2__i_b = _x117*(_x109 - _x113)
+            _x118 = i_b*math.sin(_x108)
+            _x119 = math.sin(_x112)
+            _x120 = _x114*l0
             _d_i_L2__i_omega0_hat = (-_x105**2*_x116*_x120 + _x117*(-_x107*_x110 + _x110*_x111
-                - _x119*i_t_bottom + _x122*i_b*i_t_stance))
-            _d_i_L2__i_phase_td = _x117*(-_x119 + _x122*i_b)
+                - _x118*i_t_bottom + _x119*i_b*i_t_stance))
+            _d_i_L2__i_phase_td = _x117*(-_x118 + _x119*i_b)
+            _x121 = _x110*i_omega0_hat
+            _x122 = _x105*_x116**2*_x120
+            _d_i_L2__i_t_bottom = _x117*(-_x118*i_omega0_hat - _x121) + _x122
+            _d_i_L2__i_t_stance = _x117*(_x119*i_b*i_omega0_hat + _x121) - _x122
             # tangents as every branch names them
             _d_i_L2__q_rd_td = 0.0
             _d_i_L2__i_q_thd_eff = 0.0
@@ -1175,112 +1176,113 @@ def gravity_impulse_type4_jac13_f024d3(_a):
             _x140 = (1.0/_x139)
             _x141 = _x138*_x140*l0
             _i_L2 = _x137*_x141
-            _x142 = i_a + 1.0
-            _x143 = i_a*i_omega0_hat
-            _x144 = _x132*i_b
-            _x145 = _x144*i_omega0_hat
-            _x146 = _x137*l0
-            _x147 = _x138*_x140**2*_x146
-            _d_i_L2__i_t_bottom = _x141*(_x124*_x145 + _x134*_x143 - _x142*i_omega0_hat) + _x147
-            _d_i_L2__i_t_stance = _x141*(-_x126*_x145 - _x129*_x143 + _x142*i_omega0_hat) - _x147
-            _x148 = (1.0/_x131)
-            _x149 = _x148*i_a
-            _d_i_L2__i_a = _x141*(_x124 - _x126 - _x133*_x149 + _x136*_x149 + _x139*i_omega0_hat)
-            _x150 = i_b**3
-            _x151 = -_x131/_x150 + (1.0/i_b)
-            _d_i_L2__i_b = (_x141*(_x129*_x132*_x148*_x150*_x151 + _x129*_x132 - _x135*_x148*_x150*_x151
+            _x142 = (1.0/_x131)
+            _x143 = _x142*i_a
+            _d_i_L2__i_a = _x141*(_x124 - _x126 - _x133*_x143 + _x136*_x143 + _x139*i_omega0_hat)
+            _x144 = i_b**3
+            _x145 = -_x131/_x144 + (1.0/i_b)
+            _d_i_L2__i_b = (_x141*(_x129*_x132*_x142*_x144*_x145 + _x129*_x132 - _x135*_x142*_x144*_x145
                 - _x135))
-            _x152 = i_a*i_t_stance
-            _d_i_L2__i_omega0_hat = (-_x138**2*_x140*_x146 + _x141*(_x124*_x144*i_t_bottom
-                - _x126*_x144*i_t_stance + _x127*_x134 - _x127 - _x129*_x152 + _x152 - i_t_bottom
-                + i_t_stance))
+            _x146 = _x137*l0
+            _x147 = i_a*i_t_stance
+            _x148 = _x132*i_b
+            _x149 = _x124*_x148
+            _x150 = _x126*_x148
+            _d_i_L2__i_omega0_hat = (-_x138**2*_x140*_x146 + _x141*(_x127*_x134 - _x127 - _x129*_x147 + _x147
+                + _x149*i_t_bottom - _x150*i_t_stance - i_t_bottom + i_t_stance))
+            _x151 = i_a + 1.0
+            _x152 = i_a*i_omega0_hat
+            _x153 = _x138*_x140**2*_x146
+            _d_i_L2__i_t_bottom = _x141*(_x134*_x152 + _x149*i_omega0_hat - _x151*i_omega0_hat) + _x153
+            _d_i_L2__i_t_stance = _x141*(-_x129*_x152 - _x150*i_omega0_hat + _x151*i_omega0_hat) - _x153
             # tangents as every branch names them
             _d_i_L2__q_rd_td = 0.0
             _d_i_L2__i_phase_td = 0.0
             _d_i_L2__i_q_thd_eff = 0.0
         elif leg_length == 2.0:
-            _x153 = i_omega0_hat*i_t_bottom
-            _x154 = math.sin(_x153)
-            _x155 = i_omega0_hat*i_t_stance
-            _x156 = math.sin(_x155)
-            _x157 = i_q_thd_eff**2
-            _x158 = _x157*l0
-            _x159 = math.cos(_x155)
-            _x160 = i_omega0_hat**2*l0
-            _x161 = _x158*i_t_stance
-            _x162 = _x159*q_rd_td - _x160*i_t_stance - _x161 + g_s*i_t_stance
-            _x163 = g_s*i_t_bottom
-            _x164 = math.cos(_x153)
-            _x165 = _x160*i_t_bottom
-            _x166 = _x158*i_t_bottom
-            _x167 = (_x154*_x157*l0 - _x154*g_s - _x156*_x158 + _x156*g_s - _x162*i_omega0_hat
-                + i_omega0_hat*(_x163 + _x164*q_rd_td - _x165 - _x166))
-            _x179 = (1.0/i_omega0_hat)
-            _x168 = _x179**3
-            _x169 = -i_t_bottom + i_t_stance
-            _x170 = (1.0/_x169)
-            _x171 = _x168*_x170
-            _i_L2 = _x167*_x171
-            _x172 = _x164*i_omega0_hat
-            _x173 = _x159*i_omega0_hat
-            _d_i_L2__q_rd_td = _x171*(_x172 - _x173)
-            _x174 = i_omega0_hat*q_rd_td
-            _x175 = _x158 + _x160 - g_s
-            _x176 = _x167*_x168*_x170**2
-            _d_i_L2__i_t_bottom = (_x171*(_x158*_x172 - _x172*g_s + i_omega0_hat*(-_x154*_x174 - _x175))
-                + _x176)
-            _d_i_L2__i_t_stance = (_x171*(-_x158*_x173 + _x159*g_s*i_omega0_hat - i_omega0_hat*(-_x156*_x174
-                - _x175)) - _x176)
-            _x177 = 2.0*l0
-            _x178 = _x153*_x177
-            _d_i_L2__i_omega0_hat = (-3.0*_x167*_x170*_x179**4 + _x171*(_x157*_x164*i_t_bottom*l0
-                - _x159*_x161 + _x159*g_s*i_t_stance - _x162 - _x163*_x164 + _x164*q_rd_td - _x165 - _x166
-                + g_s*i_t_bottom - i_omega0_hat*(-_x155*_x177 - _x156*i_t_stance*q_rd_td)
-                + i_omega0_hat*(-_x154*i_t_bottom*q_rd_td - _x178)))
-            _d_i_L2__i_q_thd_eff = (_x171*(2.0*_x154*i_q_thd_eff*l0 - _x156*_x177*i_q_thd_eff
-                - _x178*i_q_thd_eff + 2.0*i_omega0_hat*i_q_thd_eff*i_t_stance*l0))
+            _x154 = i_omega0_hat*i_t_bottom
+            _x155 = math.sin(_x154)
+            _x156 = i_omega0_hat*i_t_stance
+            _x157 = math.sin(_x156)
+            _x158 = i_q_thd_eff**2
+            _x159 = _x158*l0
+            _x160 = math.cos(_x156)
+            _x161 = i_omega0_hat**2*l0
+            _x162 = _x159*i_t_stance
+            _x163 = _x160*q_rd_td - _x161*i_t_stance - _x162 + g_s*i_t_stance
+            _x164 = g_s*i_t_bottom
+            _x165 = math.cos(_x154)
+            _x166 = _x161*i_t_bottom
+            _x167 = _x159*i_t_bottom
+            _x168 = (_x155*_x158*l0 - _x155*g_s - _x157*_x159 + _x157*g_s - _x163*i_omega0_hat
+                + i_omega0_hat*(_x164 + _x165*q_rd_td - _x166 - _x167))
+            _x181 = (1.0/i_omega0_hat)
+            _x169 = _x181**3
+            _x170 = -i_t_bottom + i_t_stance
+            _x171 = (1.0/_x170)
+            _x172 = _x169*_x171
+            _i_L2 = _x168*_x172
+            _x173 = _x165*i_omega0_hat
+            _x174 = _x160*i_omega0_hat
+            _d_i_L2__q_rd_td = _x172*(_x173 - _x174)
+            _x175 = 2.0*l0
+            _x176 = _x157*q_rd_td
+            _x177 = _x154*_x175
+            _x178 = _x155*q_rd_td
+            _d_i_L2__i_omega0_hat = (-3.0*_x168*_x171*_x181**4 + _x172*(_x158*_x165*i_t_bottom*l0
+                - _x160*_x162 + _x160*g_s*i_t_stance - _x163 - _x164*_x165 + _x165*q_rd_td - _x166 - _x167
+                + g_s*i_t_bottom + i_omega0_hat*(-_x177 - _x178*i_t_bottom) - i_omega0_hat*(-_x156*_x175
+                - _x176*i_t_stance)))
+            _d_i_L2__i_q_thd_eff = (_x172*(2.0*_x155*i_q_thd_eff*l0 - _x157*_x175*i_q_thd_eff
+                - _x177*i_q_thd_eff + 2.0*i_omega0_hat*i_q_thd_eff*i_t_stance*l0))
+            _x179 = _x159 + _x161 - g_s
+            _x180 = _x168*_x169*_x171**2
+            _d_i_L2__i_t_bottom = (_x172*(_x159*_x173 - _x173*g_s + i_omega0_hat*(-_x178*i_omega0_hat
+                - _x179)) + _x180)
+            _d_i_L2__i_t_stance = (_x172*(-_x159*_x174 + _x160*g_s*i_omega0_hat
+                - i_omega0_hat*(-_x176*i_omega0_hat - _x179)) - _x180)
             # tangents as every branch names them
             _d_i_L2__i_a = 0.0
             _d_i_L2__i_b = 0.0
             _d_i_L2__i_phase_td = 0.0
         else:
             return _NAN14 + (STATUS_INVALID_INPUT,)
-        _x180 = g_s*m
-        _x181 = _x180*math.sin(i_bottom_q_th)
-        _x182 = _i_L1*_x181
-        _x183 = _x180*math.sin(q_th_td)
+        _x182 = g_s*m
+        _x183 = _x182*math.sin(i_bottom_q_th)
         _x184 = _i_L1*_x183
-        _x185 = (0.5)*i_t_bottom
-        _x186 = _i_L2*_x181
-        _x187 = _x180*math.sin(i_liftoff_q_th)
-        _x188 = _i_L2*_x187
-        _x189 = -0.5*i_t_bottom + (0.5)*i_t_stance
-        i_P_new = _x185*(_x182 + _x184) + _x189*(_x186 + _x188)
-        _pd__1 = _x185*(_x181 + _x183)
-        _pd__2 = _x189*(_x181 + _x187)
-        _x190 = _i_L1*_x180*_x185
-        d_i_P_new__q_th_td = _x190*math.cos(q_th_td)
+        _x185 = _x182*math.sin(q_th_td)
+        _x186 = _i_L1*_x185
+        _x187 = (0.5)*i_t_bottom
+        _x188 = _i_L2*_x183
+        _x189 = _x182*math.sin(i_liftoff_q_th)
+        _x190 = _i_L2*_x189
+        _x191 = -0.5*i_t_bottom + (0.5)*i_t_stance
+        i_P_new = _x187*(_x184 + _x186) + _x191*(_x188 + _x190)
+        _pd__1 = _x187*(_x183 + _x185)
+        _pd__2 = _x191*(_x183 + _x189)
         d_i_P_new__q_rd_td = _d_i_L1__q_rd_td*_pd__1 + _d_i_L2__q_rd_td*_pd__2
-        _x191 = (0.5)*_x186
-        _x192 = (0.5)*_x188
-        d_i_P_new__i_t_bottom = (_d_i_L1__i_t_bottom*_pd__1 + _d_i_L2__i_t_bottom*_pd__2 + (0.5)*_x182
-            + (0.5)*_x184 - _x191 - _x192)
-        d_i_P_new__i_t_stance = _d_i_L2__i_t_stance*_pd__2 + _x191 + _x192
-        _x193 = math.cos(i_bottom_q_th)
-        _x194 = _i_L2*_x180*_x189
-        d_i_P_new__i_bottom_q_th = _x190*_x193 + _x193*_x194
-        d_i_P_new__i_liftoff_q_th = _x194*math.cos(i_liftoff_q_th)
+        _x192 = _i_L1*_x182*_x187
+        d_i_P_new__q_th_td = _x192*math.cos(q_th_td)
         d_i_P_new__i_a = _d_i_L1__i_a*_pd__1 + _d_i_L2__i_a*_pd__2
         d_i_P_new__i_b = _d_i_L1__i_b*_pd__1 + _d_i_L2__i_b*_pd__2
+        _x193 = math.cos(i_bottom_q_th)
+        _x194 = _i_L2*_x182*_x191
+        d_i_P_new__i_bottom_q_th = _x192*_x193 + _x193*_x194
+        d_i_P_new__i_liftoff_q_th = _x194*math.cos(i_liftoff_q_th)
         d_i_P_new__i_omega0_hat = _d_i_L1__i_omega0_hat*_pd__1 + _d_i_L2__i_omega0_hat*_pd__2
         d_i_P_new__i_phase_td = _d_i_L1__i_phase_td*_pd__1 + _d_i_L2__i_phase_td*_pd__2
         d_i_P_new__i_q_thd_eff = _d_i_L1__i_q_thd_eff*_pd__1 + _d_i_L2__i_q_thd_eff*_pd__2
+        _x195 = (0.5)*_x188
+        _x196 = (0.5)*_x190
+        d_i_P_new__i_t_bottom = (_d_i_L1__i_t_bottom*_pd__1 + _d_i_L2__i_t_bottom*_pd__2 + (0.5)*_x184
+            + (0.5)*_x186 - _x195 - _x196)
+        d_i_P_new__i_t_stance = _d_i_L2__i_t_stance*_pd__2 + _x195 + _x196
     else:
         return _NAN14 + (STATUS_INVALID_INPUT,)
     # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, d_i_P_new__q_th_td, 0.0, d_i_P_new__q_rd_td, d_i_P_new__i_t_bottom,
-        d_i_P_new__i_t_stance, d_i_P_new__i_bottom_q_th, d_i_P_new__i_liftoff_q_th, 0.0, d_i_P_new__i_a,
-        d_i_P_new__i_b, d_i_P_new__i_omega0_hat, d_i_P_new__i_phase_td, d_i_P_new__i_q_thd_eff, STATUS_OK)
+    return (i_P_new, 0.0, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__i_a, d_i_P_new__i_b, 0.0,
+        d_i_P_new__i_bottom_q_th, d_i_P_new__i_liftoff_q_th, d_i_P_new__i_omega0_hat, d_i_P_new__i_phase_td,
+        d_i_P_new__i_q_thd_eff, d_i_P_new__i_t_bottom, d_i_P_new__i_t_stance, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1291,11 +1293,11 @@ def gravity_type4_stance_jacobian(x, p, out):
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
     Runs the shared body :func:`gravity_stance_jacobian_shared` with
-    gravity_impulse_type4_jac13_f024d3. Arguments, returns and status: those of
+    gravity_impulse_type4_jac13_8638ac. Arguments, returns and status: those of
     :func:`gravity_type0_stance_jacobian`.
     """
     # Total ops: 0
-    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type4_jac13_f024d3)
+    return gravity_stance_jacobian_shared(x, p, out, gravity_impulse_type4_jac13_8638ac)
 
 
 @njit(cache=True, nogil=True, error_model="numpy")

@@ -10,7 +10,7 @@
 #   flight.py sha256:af2637d59c8ab493
 #   geyer.py sha256:f781cbbce76a77c5
 #   geyer_vs.py sha256:989b828600db2cf3
-#   gravity.py sha256:669898ef52090ee3
+#   gravity.py sha256:e6c6417abbdd707c
 #   gravity_type5.py sha256:2521abfe9185b31a
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:157eb45b8e341bc0
-#   iterative_report.py sha256:da060f551a17c035
+#   iterative.py sha256:52b07d30e8b56405
+#   iterative_report.py sha256:62d0934bf535c0d9
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""

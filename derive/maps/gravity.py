@@ -43,6 +43,7 @@ from .. import catalog
 from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
+from ..outline import defined, used
 from ..symbols import (
     a,
     b,
@@ -359,14 +360,18 @@ def liftoff_speed_from_energy(angle: sp.Basic, momentum: sp.Basic) -> tuple[Step
     )
 
 
-#: What a type's impulse rule reads (the trajectory of the current iterate, by its kernel names, the
-#: parameters and the options): the arguments of every type's impulse kernel, the same for all.
-_IMPULSE_READS = (
-    "q_th_td", "q_r_td", "q_rd_td", "q_r_lo", "m", "l0", "g_s",
-    "i_t_bottom", "i_t_stance", "i_bottom_q_th", "i_liftoff_q_th", "i_bottom_q_r",
-    "i_a", "i_b", "i_omega0_hat", "i_phase_td", "i_q_thd_eff",
-    "samples", "interval", "leg_length",
-)  # fmt: skip
+@cache
+def _impulse_reads() -> tuple[str, ...]:
+    """What the types' impulse rules read (the trajectory of the current iterate, by its kernel
+    names, the parameters and the options): the arguments of every type's impulse kernel, the same
+    for all. The family's stance arguments first, in their order, then the trajectory's names."""
+    inp = FAMILY.inputs(catalog.TOUCHDOWN, FAMILY.params + ("q_r_lo",))
+    names: set[str] = set()
+    for kind in range(5):
+        steps = _impulse_steps(kind, inp, "i_")
+        names |= used(steps) - defined(steps)
+    first = [a.name for a in FAMILY.stance_args() if a.name in names]
+    return tuple(first + sorted(names - set(first)))
 
 
 @cache
@@ -377,7 +382,7 @@ def impulse_kernel(kind: int) -> Kernel:
     inp = FAMILY.inputs(catalog.TOUCHDOWN, FAMILY.params + ("q_r_lo",))
     docs = {a.name: a for a in FAMILY.stance_args()}
     args = tuple(
-        docs.get(n) or Arg(sym(n), f"{n} of the current iterate's trajectory") for n in _IMPULSE_READS
+        docs.get(n) or Arg(sym(n), f"{n} of the current iterate's trajectory") for n in _impulse_reads()
     )
     return Kernel(
         name=f"gravity_impulse_type{kind}",
@@ -424,7 +429,7 @@ def _constant_correction(kind: int):
                 body=(
                     Call(
                         impulse_kernel(kind),
-                        {n: sym(n) for n in _IMPULSE_READS},
+                        {n: sym(n) for n in _impulse_reads()},
                         {"i_P_new": "i_P_new"},
                         comment="the type's impulse rule",
                     ),
