@@ -396,6 +396,12 @@ class Kernel:
     #: iterative maps, one per choice), whose callers are then the same code but for the callee
     #: (:mod:`.share`).
     dense_tangent: bool = False
+    #: Its node loops run to the largest node count of the :class:`Lookup` that binds their count
+    #: and stop at the count (a trip count LLVM knows: it unrolls them and keeps the node arrays in
+    #: registers; the iterative map's value kernels at 4 nodes run in 0.9x the time of a loop to the
+    #: count). Derivative kernels loop to the count (:mod:`.tangent`): their node arrays, one per
+    #: direction, unrolled ran in 1.08x the time (benchmarks/, ``bench_versions.py``).
+    unroll_nodes: bool = True
 
     def __post_init__(self):
         if self.external and (self.steps or "." in self.module):

@@ -123,6 +123,8 @@ class _Ctx:
     shapes: dict = field(default_factory=dict)
     #: the module constants of the lookup tables: name -> (padded shape, values by code)
     tables: dict = field(default_factory=dict)
+    #: the largest value of each scalar lookup table of whole numbers (a node count's bound)
+    bounds: dict = field(default_factory=dict)
     node_loops: int = 0
     #: what each branch of a switch defined, for a later switch on the same selector in a scope
     #: the first one's is still open: (that scope, selector, code, names, the branch's scope)
@@ -484,6 +486,7 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
             "fail_status": it.fail_status,
             "arrays": arrays,
             "nodes": to_code(it.nodes) if arrays else "",
+            "bound": _bound(ctx, to_code(it.nodes)) if arrays else None,
             "a": _node_index(ctx) if arrays else "",
         }
     )
@@ -662,11 +665,20 @@ def _lower_lookup(ctx: _Ctx, lk: Lookup, idx: str) -> list[dict]:
         ctx.tables[const] = values
         ctx.scope.define(name, ctx.where(where))
         ctx.shapes[name] = shape
+        if shape == "scalar" and all(float(v).is_integer() and v >= 0 for v in by_code.values()):
+            ctx.bounds[name] = int(max(by_code.values()))
         binds.append({"name": name, "const": const})
     nodes = [{"kind": "comment", "text": lk.comment}] if lk.comment else []
     valid = " or ".join(f"_code == {c}" for c in codes)
     nodes.append({"kind": "lookup", "selector": to_code(lk.selector), "valid": valid, "binds": binds})
     return nodes
+
+
+def _bound(ctx: _Ctx, count: str) -> int | None:
+    """The trip count of a node loop over ``count`` nodes (the largest count of the lookup that binds
+    it; the loop stops at ``count``), or None: a loop to ``count`` (:attr:`Kernel.unroll_nodes`)."""
+    bound = ctx.bounds.get(count) if ctx.kernel.unroll_nodes else None
+    return bound if bound is not None and bound <= MAX_NODES else None
 
 
 def _lower_nodes(ctx: _Ctx, nd: Nodes, idx: str) -> list[dict]:
@@ -700,6 +712,7 @@ def _lower_nodes(ctx: _Ctx, nd: Nodes, idx: str) -> list[dict]:
             "j": j,
             "k": k,
             "count": to_code(nd.count),
+            "bound": _bound(ctx, to_code(nd.count)),
             "reads": [{"name": s.name, "array": a} for s, a in nd.reads],
             "sums": [{"name": s.name, "matrix": m, "array": a} for s, m, a in nd.sums],
             "body": body,
@@ -720,7 +733,8 @@ def _lower_reduce(ctx: _Ctx, rd: Reduce, idx: str) -> list[dict]:
     k = _node_index(ctx)
     nodes = [{"kind": "comment", "text": rd.comment}] if rd.comment else []
     sums = [{"name": rd.name.name, "term": term.format(k=k)}]
-    nodes.append({"kind": "reduce", "k": k, "count": to_code(rd.count), "sums": sums})
+    count = to_code(rd.count)
+    nodes.append({"kind": "reduce", "k": k, "count": count, "bound": _bound(ctx, count), "sums": sums})
     return nodes
 
 

@@ -401,6 +401,7 @@ class Differentiator:
             unchecked=tuple(a.name for a in extra) + tuple(f.name for f in fields),
             doc_args=doc_args + ".",
             doc_returns=values + (block,),
+            unroll_nodes=False,
         )
         suffix = choice_of(kernel)
         if suffix:

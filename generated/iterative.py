@@ -219,12 +219,16 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     S = _Lac198189[_code]
     S1 = _L8c0ca55d[_code]
     # the zeroth iterate at the nodes
-    for _j1000 in range(int(nq)):
+    for _j1000 in range(6):
+        if _j1000 >= nq:
+            break
         _u = u[_j1000]
         Q0[_j1000] = _u*(-guess_q_th + q_th) + guess_q_th
         P0[_j1000] = _u*(-guess_q_r**2*guess_q_thd*m + m*q_r**2*q_thd) + guess_q_r**2*guess_q_thd*m
     # Picard passes on the node values (collocation in u)
-    for _j1013 in range(int(nq)):
+    for _j1013 in range(6):
+        if _j1013 >= nq:
+            break
         Q[_j1013] = Q0[_j1013]
         P[_j1013] = P0[_j1013]
     _D = -guess_q_r + q_r
@@ -237,7 +241,9 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values of the pass: sigma, F_r (29), sin Q
-        for _j1002 in range(int(nq)):
+        for _j1002 in range(6):
+            if _j1002 >= nq:
+                break
             _Qj = Q[_j1002]
             _Pj = P[_j1002]
             _u = u[_j1002]
@@ -249,14 +255,18 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             F[_j1002] = _F
             sinQ[_j1002] = _sinQ
         # Psi and the u-rates of (30)-(32) at the nodes
-        for _j1004 in range(int(nq)):
+        for _j1004 in range(6):
+            if _j1004 >= nq:
+                break
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
             _sigma = sigma[_j1004]
             _sinQ = sinQ[_j1004]
             _S1F = 0.0
-            for _j1005 in range(int(nq)):
+            for _j1005 in range(6):
+                if _j1005 >= nq:
+                    break
                 _S1F += S1[_j1004, _j1005]*F[_j1005]
             _x1 = _S1F/_u**2
             _x2 = math.sqrt(m)
@@ -275,22 +285,32 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             break
         _wfq = 0.0
         _wfp = 0.0
-        for _j1006 in range(int(nq)):
+        for _j1006 in range(6):
+            if _j1006 >= nq:
+                break
             _wfq += w[_j1006]*fq[_j1006]
             _wfp += w[_j1006]*fp[_j1006]
         # F_r minus its spring term
-        for _j1008 in range(int(nq)):
+        for _j1008 in range(6):
+            if _j1008 >= nq:
+                break
             _F = F[_j1008]
             _sigma = sigma[_j1008]
             G[_j1008] = _F - k_c*(-_sigma + l0)
         _rbar = 0.0
-        for _j1010 in range(int(nq)):
+        for _j1010 in range(6):
+            if _j1010 >= nq:
+                break
             _rbar += w1[_j1010]*G[_j1010]
         # the next iterate at the nodes
-        for _j1011 in range(int(nq)):
+        for _j1011 in range(6):
+            if _j1011 >= nq:
+                break
             _Sfq = 0.0
             _Sfp = 0.0
-            for _j1012 in range(int(nq)):
+            for _j1012 in range(6):
+                if _j1012 >= nq:
+                    break
                 _Sfq += S[_j1011, _j1012]*fq[_j1012]
                 _Sfp += S[_j1011, _j1012]*fp[_j1012]
             Q_next[_j1011] = -_Sfq + _wfq + q_th
@@ -303,7 +323,9 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0))
-        for _j1013 in range(int(nq)):
+        for _j1013 in range(6):
+            if _j1013 >= nq:
+                break
             _conv0 = _conv0 and abs(Q_next[_j1013] - Q[_j1013]) <= tol*(1.0)
             Q[_j1013] = Q_next[_j1013]
             _conv0 = (_conv0 and abs(P_next[_j1013] - P[_j1013]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
@@ -314,7 +336,9 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     _t_end = 0.0
     _q_end = 0.0
     _p_end = 0.0
-    for _j1014 in range(int(nq)):
+    for _j1014 in range(6):
+        if _j1014 >= nq:
+            break
         _t_end += w[_j1014]*ft[_j1014]
         _q_end += w[_j1014]*fq[_j1014]
         _p_end += w[_j1014]*fp[_j1014]
@@ -402,12 +426,16 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     S = _Lac198189[_code]
     S1 = _L8c0ca55d[_code]
     # the zeroth iterate at the nodes
-    for _j1000 in range(int(nq)):
+    for _j1000 in range(6):
+        if _j1000 >= nq:
+            break
         _u = u[_j1000]
         Q0[_j1000] = _u*(guess_q_th - q_th) + q_th
         P0[_j1000] = _u*(guess_q_thd*m*q_r_lo**2 - m*q_r**2*q_thd) + m*q_r**2*q_thd
     # Picard passes on the node values (collocation in u)
-    for _j1010 in range(int(nq)):
+    for _j1010 in range(6):
+        if _j1010 >= nq:
+            break
         Q[_j1010] = Q0[_j1010]
         P[_j1010] = P0[_j1010]
     _D = -q_r + q_r_lo
@@ -420,7 +448,9 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values of the pass: sigma, F_r (29), sin Q
-        for _j1002 in range(int(nq)):
+        for _j1002 in range(6):
+            if _j1002 >= nq:
+                break
             _Qj = Q[_j1002]
             _Pj = P[_j1002]
             _u = u[_j1002]
@@ -432,14 +462,18 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             F[_j1002] = _F
             sinQ[_j1002] = _sinQ
         # Psi and the u-rates of (30)-(32) at the nodes
-        for _j1004 in range(int(nq)):
+        for _j1004 in range(6):
+            if _j1004 >= nq:
+                break
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
             _sigma = sigma[_j1004]
             _sinQ = sinQ[_j1004]
             _S1F = 0.0
-            for _j1005 in range(int(nq)):
+            for _j1005 in range(6):
+                if _j1005 >= nq:
+                    break
                 _S1F += S1[_j1004, _j1005]*F[_j1005]
             _x1 = _S1F/_u**2
             _x2 = math.sqrt(m)
@@ -458,14 +492,20 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             break
         _wfq = 0.0
         _wfp = 0.0
-        for _j1006 in range(int(nq)):
+        for _j1006 in range(6):
+            if _j1006 >= nq:
+                break
             _wfq += w[_j1006]*fq[_j1006]
             _wfp += w[_j1006]*fp[_j1006]
         # the next iterate at the nodes
-        for _j1008 in range(int(nq)):
+        for _j1008 in range(6):
+            if _j1008 >= nq:
+                break
             _Sfq = 0.0
             _Sfp = 0.0
-            for _j1009 in range(int(nq)):
+            for _j1009 in range(6):
+                if _j1009 >= nq:
+                    break
                 _Sfq += S[_j1008, _j1009]*fq[_j1009]
                 _Sfp += S[_j1008, _j1009]*fp[_j1009]
             Q_next[_j1008] = _Sfq + q_th
@@ -475,7 +515,9 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0))
-        for _j1010 in range(int(nq)):
+        for _j1010 in range(6):
+            if _j1010 >= nq:
+                break
             _conv0 = _conv0 and abs(Q_next[_j1010] - Q[_j1010]) <= tol*(1.0)
             Q[_j1010] = Q_next[_j1010]
             _conv0 = (_conv0 and abs(P_next[_j1010] - P[_j1010]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
@@ -487,7 +529,9 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     _q_end = 0.0
     _p_end = 0.0
     _work = 0.0
-    for _j1011 in range(int(nq)):
+    for _j1011 in range(6):
+        if _j1011 >= nq:
+            break
         _t_end += w[_j1011]*ft[_j1011]
         _q_end += w[_j1011]*fq[_j1011]
         _p_end += w[_j1011]*fp[_j1011]

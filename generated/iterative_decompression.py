@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:af2637d59c8ab493
-#   iterative.py sha256:52b07d30e8b56405
+#   iterative.py sha256:c686fe25a46ed388
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

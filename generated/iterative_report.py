@@ -9,7 +9,7 @@
 #   support.py sha256:cd017e56afa49b84
 #   flight.py sha256:af2637d59c8ab493
 #   geyer_vs.py sha256:989b828600db2cf3
-#   iterative.py sha256:52b07d30e8b56405
+#   iterative.py sha256:c686fe25a46ed388
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
