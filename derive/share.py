@@ -79,7 +79,8 @@ def _literals(value, fn, seen: list):
 
 def _silent(value):
     """``value`` (a code field) with its prose blanked: kernels that differ only in a comment (one
-    naming the callee a family member calls) share a body, whose comments are its first kernel's."""
+    naming the callee a family member calls) share a body, whose comments are its first kernel's with
+    the words that differ naming the body's arguments (:func:`_prose`)."""
     if isinstance(value, list):
         return [_silent(v) for v in value]
     if isinstance(value, dict):
@@ -158,6 +159,32 @@ def _replace(value, pattern: re.Pattern, names: dict[str, str]):
     return value
 
 
+def _prose(first, others: list, callees: dict[str, str]):
+    """``first``'s code fields with each word of its prose (a comment) that another member's prose
+    has otherwise (the callee a family member calls, named in a comment) replaced by the argument
+    that passes that callee: the shared body's comments name what every member runs. ``callees``:
+    the first member's callees by argument name; a word names the callee it is, or whose name it
+    starts (a comment names a value kernel, the body calls its Jacobian)."""
+    if isinstance(first, list):
+        return [_prose(v, [o[i] for o in others], callees) for i, v in enumerate(first)]
+    if not isinstance(first, dict):
+        return first
+    out = {}
+    for f, v in first.items():
+        if f in _PROSE and isinstance(v, str) and any(o.get(f) != v for o in others):
+            words = re.split(r"(\W+)", v)
+            theirs = [re.split(r"(\W+)", o[f]) for o in others]
+            if all(len(t) == len(words) for t in theirs):
+                for i, w in enumerate(words):
+                    if any(t[i] != w for t in theirs):
+                        arg = next((a for c, a in callees.items() if c == w or c.startswith(w + "_")), None)
+                        words[i] = arg or w
+            out[f] = "".join(words)
+        else:
+            out[f] = _prose(v, [o.get(f) for o in others], callees) if f not in _PROSE else v
+    return out
+
+
 def share_bodies(kernels: list[dict]) -> list[dict]:
     """``kernels`` (one module's, lowered) with every group of two or more that differ only in their
     callees and in at most :data:`MAX_CONSTANTS` float constants (the iterative maps' ``held`` zeroth
@@ -203,6 +230,7 @@ def share_bodies(kernels: list[dict]) -> list[dict]:
         named = dict(zip(constants, arguments[len(callees) :], strict=True))
         code = {f: first[f] for f in _CODE_FIELDS}
         if own:
+            code = _prose(code, [{f: k[f] for f in _CODE_FIELDS} for k, _, _ in members[1:]], own)
             code = _replace(code, _pattern(own), own)
         code = _literals(code, lambda i, t, named=named: named.get(i, t), [])
         body = copy.deepcopy(first)

@@ -371,7 +371,7 @@ def gravity_stance_jacobian_shared(x, p, out, gravity_impulse_jac13):
             d_i_bottom_q_r__j = _T[13, _j2]
             d_i_bottom_q_th__j = _T[14, _j2]
             d_i_liftoff_q_th__j = _T[16, _j2]
-            # chain rule through gravity_impulse_type0
+            # chain rule through gravity_impulse_jac13
             d_i_P_new__j = (_j_i_P_new__i_a*d_i_a__j + _j_i_P_new__i_b*d_i_b__j
                 + _j_i_P_new__i_bottom_q_r*d_i_bottom_q_r__j + _j_i_P_new__i_bottom_q_th*d_i_bottom_q_th__j
                 + _j_i_P_new__i_liftoff_q_th*d_i_liftoff_q_th__j + _j_i_P_new__i_omega0_hat*d_i_omega0_hat__j
@@ -1397,7 +1397,7 @@ def gravity_apex_return_jacobian_shared(x, p, out, gravity_stance):
     _j_P_c__q_rd_td = _o1[63]
     _j_P_c__q_th_td = _o1[64]
     _j_P_c__q_thd_td = _o1[65]
-    # chain rule through gravity_type0_stance
+    # chain rule through gravity_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_th_td*_j_td_q_th__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
     d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex

@@ -10,7 +10,7 @@
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_jacobian.py sha256:439802d2318bb4fa
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   gravity_jacobian.py sha256:483cdca62bfc2ca0
+#   gravity_jacobian.py sha256:a762b5fa357211ce
 #   gravity_type5_jacobian.py sha256:cd2fbda68786b927
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a

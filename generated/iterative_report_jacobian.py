@@ -9,7 +9,7 @@
 #   support.py sha256:cd017e56afa49b84
 #   flight_jacobian.py sha256:138a95b59cb50fe8
 #   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   iterative_jacobian.py sha256:4014c9b02e1bd09c
+#   iterative_jacobian.py sha256:cbb94ea65235520c
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""

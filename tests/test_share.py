@@ -103,6 +103,30 @@ def test_kernels_differing_in_a_constant_pass_it_to_the_shared_body(tmp_path):
     assert mod.step_three(1.5, 2.0) == (1.5 * 3.0 * 2.0 + 2.5, 0)
 
 
+def test_a_shared_bodys_comments_name_the_argument_not_the_first_members_callee(tmp_path):
+    """A comment naming the member's callee (or the kernel whose Jacobian it calls: a word that
+    starts the callee's name) names the shared body's argument; the words every member's comment
+    has stay."""
+    c2, c3 = _callee("times_two_jac", 2.0), _callee("times_three_jac", 3.0)
+
+    def caller(name: str, callee: Kernel, comment: str) -> Kernel:
+        k = _caller(name, callee)
+        call = replace(k.steps[0], comment=comment)
+        return replace(k, steps=(call, *k.steps[1:]))
+
+    members = [
+        caller("step_two", c2, "scaled by times_two, then by b"),
+        caller("step_three", c3, "scaled by times_three, then by b"),
+    ]
+    out = share_bodies([lower(k) for k in (c2, c3, *members)])
+    body = next(k for k in out if k["name"] == "step" + SUFFIX)
+    assert body["shared_args"] == ["times_jac"]
+    comments = [n["text"] for n in body["body"] if n["kind"] == "comment"]
+    assert comments == ["scaled by times_jac, then by b"]
+    _, text = _load(tmp_path, out)
+    assert "# scaled by times_jac, then by b" in text and "times_two," not in text
+
+
 def test_a_kernel_differing_in_more_than_callees_and_constants_keeps_its_body(monkeypatch):
     from slipmaps.derive import share
 
