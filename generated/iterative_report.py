@@ -176,7 +176,7 @@ def report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_
     return (t_bottom, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, E_ab, STATUS_OK)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def report_core(_a):
     """Schwind and Koditschek's iteration as printed: the stance from the touchdown state and a zeroth
     iterate.

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:cd017e56afa49b84
 #   iterative.py sha256:c686fe25a46ed388
-#   iterative_report.py sha256:cef350e155504e73
+#   iterative_report.py sha256:18155f39357e22fc
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
