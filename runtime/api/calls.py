@@ -25,7 +25,8 @@ from __future__ import annotations
 
 import importlib
 import math
-from collections.abc import Mapping
+import operator
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from typing import Protocol
@@ -65,10 +66,11 @@ class KernelBackend:
     """The generated role kernels, their ``x`` and ``p`` filled by name (the index's layouts)."""
 
     def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
-        spec = call.spec(role)
-        x = np.fromiter(map(inputs.__getitem__, spec.x), np.float64, len(spec.x))
-        out = np.empty(spec.width)
-        status = kernel_functions(spec)[0](x, call.record(spec), out)
+        plan = call._scalars.get(role)
+        if plan is None:
+            plan = call._scalars[role] = ScalarPlan.of(call, role)
+        out = np.empty(plan.width)
+        status = plan.kernel(np.array(plan.take(inputs), np.float64), plan.record, out)
         return (*out.tolist(), status)
 
     def rows(self, call, role, rows, inputs, n, show):
@@ -82,6 +84,31 @@ class KernelBackend:
             status,
         )
         return out, status
+
+
+@dataclass(frozen=True)
+class ScalarPlan:
+    """A role's scalar call as :class:`KernelBackend` makes it, resolved once per :class:`Call`
+    (a controller's thousands of calls look up the spec, the kernel and the record once): the row
+    kernel, its parameter record ``p``, the length of ``out``, and ``take``, which gives the
+    role's inputs ``x`` from a mapping by name in the layout's order."""
+
+    kernel: Callable
+    record: np.ndarray
+    width: int
+    take: Callable[[Mapping[str, float]], tuple[float, ...]]
+
+    @classmethod
+    def of(cls, call: Call, role: str) -> ScalarPlan:
+        spec = call.spec(role)
+        if len(spec.x) == 1:  # itemgetter of one name gives the value, not a tuple
+            (name,) = spec.x
+
+            def take(inputs):
+                return (inputs[name],)
+        else:
+            take = operator.itemgetter(*spec.x)
+        return cls(kernel_functions(spec)[0], call.record(spec), spec.width, take)
 
 
 class Columns(dict):
@@ -158,6 +185,8 @@ class Call:
     kernels: Mapping[str, object]
     #: The parameter records built (:meth:`record`), by layout.
     _records: dict = field(default_factory=dict, compare=False, repr=False)
+    #: The roles' scalar calls resolved (:class:`ScalarPlan`), by role.
+    _scalars: dict = field(default_factory=dict, compare=False, repr=False)
 
     @classmethod
     def of(cls, name: str, params: SlipParams, options: dict, half: bool = False) -> Call:

@@ -46,7 +46,7 @@ def apex_signature(func: Callable) -> Callable:
     @functools.wraps(func)
     def wrapper(name, params, *args, **kwargs):
         if len(args) == n_req and not kwargs:  # the common call: every required input by position
-            return func(name, params, {**dict(zip(REQUIRED, args, strict=False)), **DEFAULTS})
+            return func(name, params, dict(zip(REQUIRED, args, strict=True), **DEFAULTS))
         if len(args) > n_req:
             raise TypeError(
                 f"{fname}() takes {n_req + 2} positional arguments but {len(args) + 2} were given"

@@ -223,14 +223,10 @@ def apex_return_jacobian(name: str, params: SlipParams, given: dict, **options) 
     """One step of map ``name`` (as :func:`slipmaps.apex_return`) and its derivatives with respect to
     the apex height and speed, the touchdown angle, the ground and the stiffness (module docstring)."""
     call = Call.of(name, params, options)
-    inputs = apex_inputs(given)
+    inputs, point = apex_inputs(given)
     status, row, _ = call.scalar("apex_return_jacobian", inputs)
-    point = {k: inputs[_ARG[k]] for k in given} | {"options": dict(call.options)}
+    point["options"] = dict(call.options)
     return _jacobian(call, "apex_return_jacobian", status, row, point)
-
-
-#: The apex-return inputs' kernel arguments by public name.
-_ARG = {public: arg for arg, public in _PUBLIC.items()}
 
 
 def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape) -> JacobianBatch:

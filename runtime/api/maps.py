@@ -74,9 +74,14 @@ def touchdown_inputs(call: Call, state) -> dict[str, float]:
     return dict(zip(call.spec("stance").x, state, strict=True))
 
 
-def apex_inputs(given: dict) -> dict[str, float]:
-    """The apex-return inputs by kernel argument, each checked by its domain (one line naming it)."""
-    return {_APEX_ARGS[k][0]: _APEX_ARGS[k][1](k, v) for k, v in given.items()}
+def apex_inputs(given: dict) -> tuple[dict[str, float], dict[str, object]]:
+    """The apex-return inputs, each checked by its domain (one line naming it): by kernel argument
+    (the kernel's), and by public name (the result's ``inputs``)."""
+    inputs, point = {}, {}
+    for k, v in given.items():
+        arg, check = _APEX_ARGS[k]
+        inputs[arg] = point[k] = check(k, v)
+    return inputs, point
 
 
 def stance(name: str, params: SlipParams, touchdown, **options) -> Result:
@@ -93,9 +98,8 @@ def apex_return(name: str, params: SlipParams, given: dict, **options) -> Result
     higher) -> stance -> next apex (module docstring; the inputs are the table's: ``APEX_INPUTS`` of
     derive/params.py)."""
     call = Call.of(name, params, options)
-    inputs = apex_inputs(given)
+    inputs, point = apex_inputs(given)
     status, row, message = call.scalar("apex_return", inputs)
-    point = {k: inputs[_APEX_ARGS[k][0]] for k in given}
     point["options"] = dict(call.options)
     return _result(call, "apex_return", status, row, point, message)
 

@@ -118,7 +118,16 @@ def polar_state(params: SlipParams, state: object, what: str = "touchdown") -> P
                 f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got shape {arr.shape}: {state!r}"
             )
         values = arr.tolist()  # Python floats: real()'s one-check path
-    q_r, q_rd, q_th, q_thd = (real(f"{what} {n}", v) for n, v in zip(POLAR_NAMES, values, strict=True))
+    q_r, q_rd, q_th, q_thd = values
+    # the common case, finite Python floats, in one check; else each checked, naming a bad one
+    if not (
+        type(q_r) is float
+        and type(q_rd) is float
+        and type(q_th) is float
+        and type(q_thd) is float
+        and math.isfinite(q_r + q_rd + q_th + q_thd)
+    ):
+        q_r, q_rd, q_th, q_thd = (real(f"{what} {n}", v) for n, v in zip(POLAR_NAMES, values, strict=True))
     if not 0.0 < q_r <= params.l0 * (1.0 + L0_SLACK):
         raise ValueError(f"{what} q_r must lie in (0, l0={num(params.l0)}], got {num(q_r)}")
     leg_angle(f"{what} q_th", q_th)
