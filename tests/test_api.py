@@ -474,3 +474,34 @@ def test_layout_rows_takes_the_record_flat_or_as_its_batch_view():
     flat = layout_rows(spec, call.record(spec), rows, inputs, 3)[1]
     view = layout_rows(spec, call.record(spec, rows=True), rows, inputs, 3)[1]
     assert flat.shape == view.shape == (1, len(spec.p)) and np.array_equal(flat, view)
+
+
+@pytest.mark.parametrize("name", GENERATED)
+def test_a_batch_of_one_row_is_that_row_of_a_longer_batch_bit_for_bit(name):
+    """A batch of one row runs the row kernel as a scalar call does (calls.KernelBackend.rows), a
+    longer one the kernel's batch form: the same values, derivatives and statuses, a failing row
+    (a leg angle past the horizontal) included."""
+    h, v = np.array([1.05, 1.0, 1.0]), np.array([5.0, 4.0, 4.0])
+    a = np.array([0.35, 0.30, 1.6])
+    tds = np.array([TD, (1.0, -2.0, 0.30, -5.0), (1.0, -2.0, 2.0, -5.0)])
+    batches = [
+        (slipmaps.apex_return_batch, (h, v, a)),
+        (slipmaps.apex_return_jacobian_batch, (h, v, a)),
+        (slipmaps.stance_batch, (tds,)),
+        (slipmaps.stance_jacobian_batch, (tds,)),
+    ]
+    statuses = set()
+    for batch, args in batches:
+        many = batch(name, P, *args)
+        for i in range(3):
+            one = batch(name, P, *(x[i : i + 1] for x in args))
+            assert one.status[0] == many.status[i], (batch.__name__, i)
+            statuses.add(int(one.status[0]))
+            got = one.matrix if hasattr(one, "matrix") else np.column_stack([one[k] for k in one.names])
+            want = (
+                many.matrix[i : i + 1]
+                if hasattr(many, "matrix")
+                else np.column_stack([many[k][i : i + 1] for k in many.names])
+            )
+            np.testing.assert_array_equal(got, want, err_msg=f"{batch.__name__} row {i}")
+    assert int(Status.OK) in statuses and len(statuses) > 1  # OK rows and a failing one compared

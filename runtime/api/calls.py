@@ -66,9 +66,7 @@ class KernelBackend:
     """The generated role kernels, their ``x`` and ``p`` filled by name (the index's layouts)."""
 
     def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
-        plan = call._scalars.get(role)
-        if plan is None:
-            plan = call._scalars[role] = ScalarPlan.of(call, role)
+        plan = ScalarPlan.get(call, role)
         out = np.empty(plan.width)
         status = plan.kernel(np.array(plan.take(inputs), np.float64), plan.record, out)
         return (*out.tolist(), status)
@@ -77,6 +75,14 @@ class KernelBackend:
         spec = call.spec(role)
         out = np.empty((n, spec.width))
         status = np.empty(n, dtype=np.int64)
+        if n == 1 and spec.record_only.isdisjoint(rows):
+            # one row: the row kernel, as a scalar call makes it (the batch form's arrays cost more)
+            plan = ScalarPlan.get(call, role)
+            one = dict(inputs)
+            for a, x in rows.items():
+                one[a] = x[0]
+            status[0] = plan.kernel(np.array(plan.take(one), np.float64), plan.record, out[0])
+            return out, status
         run_rows(
             kernel_functions(spec)[1],
             *layout_rows(spec, call.record(spec, rows=True), rows, inputs, n),
@@ -97,6 +103,14 @@ class ScalarPlan:
     record: np.ndarray
     width: int
     take: Callable[[Mapping[str, float]], tuple[float, ...]]
+
+    @classmethod
+    def get(cls, call: Call, role: str) -> ScalarPlan:
+        """The call's plan for the role (made on its first use)."""
+        plan = call._scalars.get(role)
+        if plan is None:
+            plan = call._scalars[role] = cls.of(call, role)
+        return plan
 
     @classmethod
     def of(cls, call: Call, role: str) -> ScalarPlan:
