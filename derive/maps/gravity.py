@@ -501,6 +501,13 @@ _NOTES = (
 )
 _PARAMS, _REQUIRES = ("m", "l0", "k", "g_s"), ("constant_stiffness",)
 
+
+def _family_build(inp: MapInputs) -> MapBuild:
+    """The family's build: none (each type builds with its own rule, :func:`_constant_correction`);
+    its module is the family's derivation module, named in the generated headers."""
+    raise ValueError("the gravity family is built by its types (gravity-type0 ... gravity-type4)")
+
+
 #: The family of types 0-4: the options every type's kernels take and their module; each type is a
 #: member map (:data:`MAPS`) that fixes the options its rule does not read.
 FAMILY = MapSpec(
@@ -510,7 +517,7 @@ FAMILY = MapSpec(
     equations=tuple(str(e) for e in range(46, 78)),
     params=_PARAMS,
     requires=_REQUIRES,
-    build=_constant_correction(0),
+    build=_family_build,
     options=(
         _READING,
         _SAMPLES,
