@@ -68,7 +68,7 @@ class KernelBackend:
     def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
         plan = ScalarPlan.get(call, role)
         out = np.empty(plan.width)
-        status = plan.kernel(np.array(plan.take(inputs), np.float64), plan.record, out)
+        status = plan.run(inputs, out)
         return (*out.tolist(), status)
 
     def rows(self, call, role, rows, inputs, n, show):
@@ -77,11 +77,10 @@ class KernelBackend:
         status = np.empty(n, dtype=np.int64)
         if n == 1 and spec.record_only.isdisjoint(rows):
             # one row: the row kernel, as a scalar call makes it (the batch form's arrays cost more)
-            plan = ScalarPlan.get(call, role)
             one = dict(inputs)
             for a, x in rows.items():
                 one[a] = x[0]
-            status[0] = plan.kernel(np.array(plan.take(one), np.float64), plan.record, out[0])
+            status[0] = ScalarPlan.get(call, role).run(one, out[0])
             return out, status
         run_rows(
             kernel_functions(spec)[1],
@@ -123,6 +122,10 @@ class ScalarPlan:
         else:
             take = operator.itemgetter(*spec.x)
         return cls(kernel_functions(spec)[0], call.record(spec), spec.width, take)
+
+    def run(self, inputs: Mapping[str, float], out: np.ndarray) -> int:
+        """The kernel on ``inputs`` (by name), writing ``out`` (``width`` floats): its status."""
+        return self.kernel(np.array(self.take(inputs), np.float64), self.record, out)
 
 
 class Columns(dict):
