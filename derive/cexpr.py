@@ -197,6 +197,19 @@ def cexpr(code: str) -> str:
     return _PRINTER.expr(tree.body)
 
 
+def _support_call(value: ast.AST, name: str) -> bool:
+    """Whether ``value`` is a call of the support module's ``name`` (``store``, ``load``) on a named
+    array, with constant positions (``load``)."""
+    return (
+        isinstance(value, ast.Call)
+        and isinstance(value.func, ast.Name)
+        and value.func.id == name
+        and bool(value.args)
+        and isinstance(value.args[0], ast.Name)
+        and (name != "load" or all(type(getattr(a, "value", None)) is int for a in value.args[1:]))
+    )
+
+
 def _stack_size(value: ast.AST) -> int | None:
     """``n`` of ``carray(stack(n), n)`` (a stack array of the lowering), else None."""
     if (
@@ -211,17 +224,38 @@ def _stack_size(value: ast.AST) -> int | None:
 
 
 def cstatements(code: str) -> tuple[list[str], dict[str, int]]:
-    """The C statements of lowered statement lines (a stack array, a tuple store or unpacking, an
-    assignment) and the stack arrays they declare (name -> length; declared by the caller at the top
-    of the function)."""
+    """The C statements of lowered statement lines (a stack array, a store or load of the support
+    module, a tuple store or unpacking, an assignment) and the stack arrays they declare (name ->
+    length; declared by the caller at the top of the function)."""
     out: list[str] = []
     arrays: dict[str, int] = {}
     for stmt in ast.parse(code.strip()).body:
+        if isinstance(stmt, ast.Expr) and _support_call(stmt.value, "store"):
+            # store(a, (v0, v1, ...)): a[j] = vj; no value reads what the store writes
+            array, values = stmt.value.args
+            if not isinstance(values, ast.Tuple):
+                raise CPrintError(f"no C for {ast.unparse(stmt)!r}")
+            for v in values.elts:
+                reads = {ast.unparse(n.value) for n in ast.walk(v) if isinstance(n, ast.Subscript)}
+                if array.id in reads:
+                    raise CPrintError(f"a store reads what it writes: {ast.unparse(stmt)!r}")
+            out += [f"{array.id}[{j}] = {cexpr(ast.unparse(v))};" for j, v in enumerate(values.elts)]
+            continue
         if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1:
             target, value = stmt.targets[0], stmt.value
             size = _stack_size(value)
             if size is not None and isinstance(target, ast.Name):
                 arrays[target.id] = size
+                continue
+            if isinstance(target, ast.Tuple) and _support_call(value, "load"):
+                # (u, w,) = load(a, i, k): u = a[i]; w = a[k]
+                array, *index = value.args
+                if len(index) != len(target.elts):
+                    raise CPrintError(f"no C for {ast.unparse(stmt)!r}")
+                out += [
+                    f"{cexpr(ast.unparse(t))} = {array.id}[{i.value}];"
+                    for t, i in zip(target.elts, index, strict=True)
+                ]
                 continue
             if isinstance(target, ast.Tuple):
                 if not isinstance(value, ast.Tuple) or len(value.elts) != len(target.elts):

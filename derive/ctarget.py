@@ -257,7 +257,7 @@ class _Kernel:
         status = None
         if n["status"]:
             status = {"code": cexpr(n["status"]), "fail": self.fail(f"(int){cexpr(n['status'])}")}
-        binds = []
+        binds = self.statements([n["load"]]) if n.get("load") else []
         for b in n["binds"]:
             self._assign(b["name"])
             binds.append(f"{b['name']} = {cexpr(b['code'])};")

@@ -88,7 +88,7 @@ def _require_checkout() -> None:
 #: with data from derive/numerics.py): name -> (template, data, the generated modules it imports
 #: besides status and support). A kernel module calling into one imports it like any other.
 NUMERICS = {
-    "dop853": ("dop853.py.j2", numerics.dop853, ()),
+    "dop853": ("dop853.py.j2", numerics.dop853, ("support",)),
     "exact_stance": ("exact_stance.py.j2", numerics.exact_stance, ("dop853", "slip_model")),
 }
 

@@ -62,10 +62,11 @@ def _names(expr) -> set[str]:
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
 _GENERATED_NAME = re.compile(
-    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+|[aop]\d+|S|code|status|L[0-9a-f]{8})|STATUS_\w+"
+    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|o\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+|[aop]\d+|S|code|status|L[0-9a-f]{8})|STATUS_\w+"
 )
 _TEMPLATE_NAMES = frozenset(
-    {"i", "out", "status", "math", "np", "njit", "carray", "NAN"} | {"stack", "fail", "finite"}
+    {"i", "out", "status", "math", "np", "njit", "carray", "NAN"}
+    | {"stack", "fail", "finite", "load", "store", "node_arrays"}
 )
 
 #: The generated support module every kernel module imports (derive/templates/support.py.j2): stack
@@ -295,9 +296,10 @@ def _stack(var: str, n: int) -> str:
 
 
 def _put(var: str, codes: list[str]) -> str:
-    """``codes`` into ``var[0], var[1], ...`` in one tuple assignment: straight-line stores, no call
-    (a helper looping over a tuple compiled once per tuple length: 15 % of a small map's first call)."""
-    return f"({', '.join(f'{var}[{i}]' for i in range(len(codes)))},) = ({', '.join(codes)},)"
+    """``codes`` into ``var[0], var[1], ...``: one call of ``support.store`` (numba lowers a
+    subscript store as a call of its own; a helper looping over a tuple compiled once per tuple
+    length)."""
+    return f"store({var}, ({', '.join(codes)},))"
 
 
 #: A role kernel with at most this many output values checks them one by one before its store
@@ -408,6 +410,8 @@ def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
             "expr": f"{callee.name}({', '.join(args)})",
             "status": status,
             "binds": binds,
+            "out": o if how.out_array else None,
+            "load": None,
         }
     )
     return nodes
@@ -811,11 +815,10 @@ def _lower_steps(ctx: _Ctx, steps, prefix: str = "") -> list[dict]:
 
 
 def _unpack(names: list[str], array: str, order) -> str:
-    """``a, b = x[0], x[3]``: the names from their positions in ``order``, the fields of ``array``."""
-    if len(names) == 1:
-        return f"{names[0]} = {array}[{list(order).index(names[0])}]"
-    items = ", ".join(f"{array}[{list(order).index(n)}]" for n in names)
-    return f"({', '.join(names)}) = ({items})"
+    """``(a, b,) = load(x, 0, 3)``: the names from their positions in ``order``, the fields of
+    ``array``, read in one call of ``support.load``."""
+    at = {n: i for i, n in enumerate(order)}
+    return f"({', '.join(names)},) = load({array}, {', '.join(str(at[n]) for n in names)})"
 
 
 _SOURCE = re.compile(r"(_o\d+\[\d+\]|-?\d+\.\d*(e[-+]?\d+)?)$")
@@ -834,6 +837,68 @@ def _strings(node, skip) -> list[str]:
             return []
         return [t for k, v in node.items() if k != "setup" for t in _strings(v, skip)]
     return []
+
+
+_OUT_READ = re.compile(r"\b(_o\d+)\[(\d+)\]")
+
+
+def _texts(node):
+    """Every string in a lowered node tree (setups and binds included)."""
+    if isinstance(node, str):
+        yield node
+    elif isinstance(node, (list, dict)):
+        for v in node.values() if isinstance(node, dict) else node:
+            yield from _texts(v)
+
+
+def _dicts(node):
+    """Every node (dict) of a lowered node tree, at any depth, in order."""
+    if isinstance(node, dict):
+        yield node
+    if isinstance(node, (list, dict)):
+        for v in node.values() if isinstance(node, dict) else node:
+            yield from _dicts(v)
+
+
+def _rewrite(node, sub):
+    """``node`` (a lowered node tree) with ``sub`` applied to every string in it."""
+    if isinstance(node, str):
+        return sub(node)
+    if isinstance(node, list):
+        return [_rewrite(n, sub) for n in node]
+    if isinstance(node, dict):
+        return {k: _rewrite(v, sub) for k, v in node.items()}
+    return node
+
+
+def _load_outputs(body: list[dict], forward: dict[str, str]) -> dict[str, str]:
+    """Every read of a callee's out array (``_o1[7]``: a bind, or a value :func:`_forward` passed
+    on) from one ``load`` right after its call (``(t_bottom, _o1_7,) = load(_o1, 0, 7)``, the
+    binds' own names where they have one): numba lowers a subscript as a call of its own. Rewrites
+    ``body`` in place; returns ``forward`` with its reads renamed."""
+    reads: dict[str, set[int]] = {}
+    for t in [*_texts(body), *forward.values()]:
+        for m in _OUT_READ.finditer(t):
+            reads.setdefault(m.group(1), set()).add(int(m.group(2)))
+    name: dict[str, str] = {}
+    for n in _dicts(body):
+        o = n.get("out") if n.get("kind") == "call" else None
+        if o not in reads:
+            continue
+        for b in n["binds"]:
+            name.setdefault(b["code"], b["name"])
+        at = sorted(reads[o])
+        names = [name.setdefault(f"{o}[{i}]", f"{o}_{i}") for i in at]
+        n["load"] = f"({', '.join(names)},) = load({o}, {', '.join(map(str, at))})"
+        n["binds"] = [b for b in n["binds"] if name[b["code"]] != b["name"]]
+    if not name:
+        return forward
+
+    def sub(text: str) -> str:
+        return _OUT_READ.sub(lambda m: name[m.group(0)], text)
+
+    body[:] = _rewrite(body, sub)
+    return {k: sub(v) for k, v in forward.items()}
 
 
 def _forward(body: list[dict]) -> dict[str, str]:
@@ -930,7 +995,7 @@ def lower(kernel: Kernel) -> dict:
         input_guard = " & ".join(conds)
         ctx.statuses.add("INVALID_INPUT")
     body = _lower_steps(ctx, kernel.steps)
-    forward = _forward(body)
+    forward = _load_outputs(body, _forward(body))
     if ctx.rows:
         ctx.rows = _compact_rows(body)
     tails = [i for i, s in enumerate(kernel.steps) if isinstance(s, Call) and s.tail]
@@ -966,6 +1031,7 @@ def lower(kernel: Kernel) -> dict:
     elif how.args_array:
         params = ["_a"] + (["out"] if how.out_array else [])
         prologue = [_unpack(list(names), "_a", names)]
+        ctx.uses_support = True
     else:
         params = list(names) + (["out"] if how.out_array else [])
         prologue = []

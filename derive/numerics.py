@@ -63,21 +63,31 @@ def _step_source() -> str:
         out, every component's value computed before any is stored (no store comes between the
         loads of a stage's combination: the four components are combined side by side)."""
         if n.isdigit():
+            # the components written out as scalars: y and every stage's row read once, in one
+            # call of support.load (numba lowers each subscript as a call of its own)
             comps = range(int(n))
+            every = ", ".join(map(str, comps))
 
-            def assign(target: str, coefficients: np.ndarray, stages: int, y: str) -> list[str]:
-                values = [
-                    _advance(f"{y}[{c}]", coefficients, stages, lambda j, c=c: f"K[{j}, {c}]") for c in comps
-                ]
-                return [f"{indent}v{c} = {v}" for c, v in enumerate(values)] + [
-                    f"{indent}{target}[{c}] = v{c}" for c in comps
+            def names(row: str) -> str:
+                return ", ".join(f"{row}_{c}" for c in comps)
+
+            def assign(target: str, coefficients: np.ndarray, stages: int) -> list[str]:
+                # (each value a name of its own: numba rewrites a function once per name assigned twice)
+                values = [_advance(f"y_{c}", coefficients, stages, lambda j, c=c: f"k{j}_{c}") for c in comps]
+                return [f"{indent}v{stages}_{c} = {v}" for c, v in enumerate(values)] + [
+                    f"{indent}store({target}, ({names(f'v{stages}')},))"
                 ]
 
-            out = [f"{indent}K[0, {c}] = f[{c}]" for c in comps]
+            out = [
+                f"{indent}({names('y')},) = load(y, {every})",
+                f"{indent}({names('k0')},) = load(f, {every})",
+                f"{indent}store(K[0], ({names('k0')},))",
+            ]
             for st in range(1, N_STAGES):
-                out += assign("ys", A[st], st, "y")
+                out += assign("ys", A[st], st)
                 out.append(f"{indent}rhs(t + {float(C[st])!r} * h, ys, p, K[{st}])")
-            out += assign("y_new", B, N_STAGES, "y")
+                out.append(f"{indent}({names(f'k{st}')},) = load(K[{st}], {every})")
+            out += assign("y_new", B, N_STAGES)
             out.append(f"{indent}rhs(t + h, y_new, p, K[{N_STAGES}])")
             return out
         out = [f"{indent}for i in range({n}):", f"{indent}    K[0, i] = f[i]"]

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
-#   exact_stance.py sha256:299560de25340ae1
+#   support.py sha256:77264c626942dd40
+#   exact_stance.py sha256:9fc8cdc675d93828
 #   flight.py sha256:af2637d59c8ab493
 # ----------------------------------------------------------------------------------------------
 """Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .exact_stance import stance, state_at
 from .flight import apex_to_touchdown, liftoff_to_apex
 
@@ -69,8 +69,8 @@ def exact_stance(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
@@ -99,9 +99,8 @@ def exact_stance(x, p, out):
             & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
             & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
+    store(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd,))
     return STATUS_OK
 
 
@@ -148,8 +147,8 @@ def exact_state_at(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9])
+    (t, q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9)
     # inputs: finite and inside their domains
     if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
             & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c)
@@ -170,7 +169,7 @@ def exact_state_at(x, p, out):
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
+    store(out, (q_r, q_rd, q_th, q_thd,))
     return STATUS_OK
 
 
@@ -235,9 +234,8 @@ def exact_apex_return(x, p, out):
             (returned).
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7],
-        p[8], p[9])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9)
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -262,15 +260,12 @@ def exact_apex_return(x, p, out):
     foot_x = _c0[5]
     # stance: Exact stance by numerical integration (DOP853)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
+    store(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd,))
     _o1 = carray(stack(10), 10)
     _c1 = exact_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,) = load(_o1, 1, 6, 7, 8, 9)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -285,14 +280,13 @@ def exact_apex_return(x, p, out):
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
             & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
             & math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
+    store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))
     return STATUS_OK
 
 

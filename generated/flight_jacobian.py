@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -16,7 +16,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -80,12 +80,10 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_0(_p
     d_t_td__b_y_apex = _pd__0
     d_t_td__ground = _x5
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19],) = (t_td, d_t_td__q_th_td,
-        d_t_td__retraction_rate, touchdown_angle, 0.0, 1.0, 0.0, d_touchdown_angle__retraction_rate, sin_td,
-        d_sin_td__b_y_apex, d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td,
-        d_cos_td__b_y_apex, d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate, d_t_td__b_y_apex,
-        d_t_td__ground,)
+    store(out, (t_td, d_t_td__q_th_td, d_t_td__retraction_rate, touchdown_angle, 0.0, 1.0, 0.0,
+        d_touchdown_angle__retraction_rate, sin_td, d_sin_td__b_y_apex, d_sin_td__q_th_td, d_sin_td__ground,
+        d_sin_td__retraction_rate, cos_td, d_cos_td__b_y_apex, d_cos_td__q_th_td, d_cos_td__ground,
+        d_cos_td__retraction_rate, d_t_td__b_y_apex, d_t_td__ground,))
     return STATUS_OK
 
 
@@ -201,12 +199,11 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate_1(_p
     d_cos_td__ground = _pd__11*d_touchdown_angle__ground
     d_cos_td__retraction_rate = _pd__11*d_touchdown_angle__retraction_rate
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19],) = (t_td, d_t_td__q_th_td,
-        d_t_td__retraction_rate, touchdown_angle, d_touchdown_angle__b_y_apex, d_touchdown_angle__q_th_td,
-        d_touchdown_angle__ground, d_touchdown_angle__retraction_rate, sin_td, d_sin_td__b_y_apex,
-        d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td, d_cos_td__b_y_apex,
-        d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate, d_t_td__b_y_apex, d_t_td__ground,)
+    store(out, (t_td, d_t_td__q_th_td, d_t_td__retraction_rate, touchdown_angle, d_touchdown_angle__b_y_apex,
+        d_touchdown_angle__q_th_td, d_touchdown_angle__ground, d_touchdown_angle__retraction_rate, sin_td,
+        d_sin_td__b_y_apex, d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td,
+        d_cos_td__b_y_apex, d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate, d_t_td__b_y_apex,
+        d_t_td__ground,))
     return STATUS_OK
 
 
@@ -262,26 +259,12 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
             d_t0__q_th_td, g_f, q_r_td, q_th_td, retraction_rate, t0, _o0))
         if _c0 != STATUS_OK:
             return fail(out, _c0)
-        t_td = _o0[0]
-        d_t_td__q_th_td = _o0[1]
-        d_t_td__retraction_rate = _o0[2]
-        touchdown_angle = _o0[3]
-        d_touchdown_angle__b_y_apex = _o0[4]
-        d_touchdown_angle__q_th_td = _o0[5]
-        d_touchdown_angle__ground = _o0[6]
-        d_touchdown_angle__retraction_rate = _o0[7]
-        sin_td = _o0[8]
-        d_sin_td__b_y_apex = _o0[9]
-        d_sin_td__q_th_td = _o0[10]
-        d_sin_td__ground = _o0[11]
-        d_sin_td__retraction_rate = _o0[12]
-        cos_td = _o0[13]
-        d_cos_td__b_y_apex = _o0[14]
-        d_cos_td__q_th_td = _o0[15]
-        d_cos_td__ground = _o0[16]
-        d_cos_td__retraction_rate = _o0[17]
-        d_t_td__b_y_apex = _o0[18]
-        d_t_td__ground = _o0[19]
+        (t_td, d_t_td__q_th_td, d_t_td__retraction_rate, touchdown_angle, d_touchdown_angle__b_y_apex,
+            d_touchdown_angle__q_th_td, d_touchdown_angle__ground, d_touchdown_angle__retraction_rate, sin_td,
+            d_sin_td__b_y_apex, d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td,
+            d_cos_td__b_y_apex, d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate,
+            d_t_td__b_y_apex, d_t_td__ground,) = (load(_o0, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
+            15, 16, 17, 18, 19))
     elif swinging == 1.0:
         # branch swinging = 1
         _o1 = carray(stack(20), 20)
@@ -289,26 +272,12 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
             d_drop__q_th_td, d_t0__q_th_td, drop, g_f, q_r_td, q_th_td, retraction_rate, t0, _o1))
         if _c1 != STATUS_OK:
             return fail(out, _c1)
-        t_td = _o1[0]
-        d_t_td__q_th_td = _o1[1]
-        d_t_td__retraction_rate = _o1[2]
-        touchdown_angle = _o1[3]
-        d_touchdown_angle__b_y_apex = _o1[4]
-        d_touchdown_angle__q_th_td = _o1[5]
-        d_touchdown_angle__ground = _o1[6]
-        d_touchdown_angle__retraction_rate = _o1[7]
-        sin_td = _o1[8]
-        d_sin_td__b_y_apex = _o1[9]
-        d_sin_td__q_th_td = _o1[10]
-        d_sin_td__ground = _o1[11]
-        d_sin_td__retraction_rate = _o1[12]
-        cos_td = _o1[13]
-        d_cos_td__b_y_apex = _o1[14]
-        d_cos_td__q_th_td = _o1[15]
-        d_cos_td__ground = _o1[16]
-        d_cos_td__retraction_rate = _o1[17]
-        d_t_td__b_y_apex = _o1[18]
-        d_t_td__ground = _o1[19]
+        (t_td, d_t_td__q_th_td, d_t_td__retraction_rate, touchdown_angle, d_touchdown_angle__b_y_apex,
+            d_touchdown_angle__q_th_td, d_touchdown_angle__ground, d_touchdown_angle__retraction_rate, sin_td,
+            d_sin_td__b_y_apex, d_sin_td__q_th_td, d_sin_td__ground, d_sin_td__retraction_rate, cos_td,
+            d_cos_td__b_y_apex, d_cos_td__q_th_td, d_cos_td__ground, d_cos_td__retraction_rate,
+            d_t_td__b_y_apex, d_t_td__ground,) = (load(_o1, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
+            15, 16, 17, 18, 19))
     else:
         return fail(out, STATUS_INVALID_INPUT)
     # the leg above the horizontal
@@ -359,18 +328,14 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
     d_t_flight__retraction_rate = d_t_td__retraction_rate
     d_foot_x__b_xd_apex = t_td
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35],) = (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight,
-        foot_x, 0.0, 0.0, 0.0, 0.0, 0.0, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex,
-        d_touchdown_q_rd__q_th_td, d_touchdown_q_rd__ground, d_touchdown_q_rd__retraction_rate,
-        d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
-        d_touchdown_q_th__retraction_rate, d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex,
-        d_touchdown_q_thd__q_th_td, d_touchdown_q_thd__ground, d_touchdown_q_thd__retraction_rate,
-        d_t_flight__b_y_apex, 0.0, d_t_flight__q_th_td, d_t_flight__ground, d_t_flight__retraction_rate,
-        d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,
-        d_foot_x__retraction_rate,)
+    store(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, 0.0, 0.0,
+        0.0, 0.0, 0.0, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex, d_touchdown_q_rd__q_th_td,
+        d_touchdown_q_rd__ground, d_touchdown_q_rd__retraction_rate, d_touchdown_q_th__b_y_apex, 0.0,
+        d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground, d_touchdown_q_th__retraction_rate,
+        d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td,
+        d_touchdown_q_thd__ground, d_touchdown_q_thd__retraction_rate, d_t_flight__b_y_apex, 0.0,
+        d_t_flight__q_th_td, d_t_flight__ground, d_t_flight__retraction_rate, d_foot_x__b_y_apex,
+        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate,))
     return STATUS_OK
 
 
@@ -459,12 +424,10 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, 
     d_apex_b_xd__q_th = d_b_xd__q_th
     d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19],) = (apex_b_y, apex_b_xd,
-        t_flight, dx_flight, apex_b_x, d_apex_b_y__q_rd, d_apex_b_y__q_th, d_apex_b_y__q_thd,
-        d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd, d_t_flight__q_th,
-        d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, d_apex_b_x__q_rd,
-        d_apex_b_x__q_th, d_apex_b_x__q_thd,)
+    store(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_rd, d_apex_b_y__q_th,
+        d_apex_b_y__q_thd, d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd,
+        d_t_flight__q_th, d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd,
+        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd,))
     return STATUS_OK
 
 
@@ -563,11 +526,9 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     d_apex_b_xd__q_th = d_b_xd__q_th
     d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24],) = (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_r,
-        d_apex_b_y__q_rd, d_apex_b_y__q_th, d_apex_b_y__q_thd, d_apex_b_xd__q_r, d_apex_b_xd__q_rd,
-        d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_r, d_t_flight__q_rd, d_t_flight__q_th,
-        d_t_flight__q_thd, d_dx_flight__q_r, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd,
-        d_apex_b_x__q_r, d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd,)
+    store(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_r, d_apex_b_y__q_rd,
+        d_apex_b_y__q_th, d_apex_b_y__q_thd, d_apex_b_xd__q_r, d_apex_b_xd__q_rd, d_apex_b_xd__q_th,
+        d_apex_b_xd__q_thd, d_t_flight__q_r, d_t_flight__q_rd, d_t_flight__q_th, d_t_flight__q_thd,
+        d_dx_flight__q_r, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, d_apex_b_x__q_r,
+        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd,))
     return STATUS_OK

@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 #   flight.py sha256:af2637d59c8ab493
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -209,8 +209,8 @@ def geyer_stance(x, p, out):
             (returned).
     """
     # Total ops: 54
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k, g_s, q_r_lo) = (p[0], p[1], p[2], p[3], p[6])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k, g_s, q_r_lo,) = load(p, 0, 1, 2, 3, 6)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
@@ -260,8 +260,8 @@ def geyer_stance(x, p, out):
             & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd) & math.isfinite(liftoff_q_r)
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,)
+    store(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd,))
     return STATUS_OK
 
 
@@ -304,8 +304,8 @@ def geyer_state_at(x, p, out):
             (returned).
     """
     # Total ops: 2
-    (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, q_r_lo) = (p[0], p[1], p[2], p[3], p[6])
+    (t, q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k, g_s, q_r_lo,) = load(p, 0, 1, 2, 3, 6)
     # inputs: finite and inside their domains
     if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
             & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k)
@@ -333,7 +333,7 @@ def geyer_state_at(x, p, out):
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
+    store(out, (q_r, q_rd, q_th, q_thd,))
     return STATUS_OK
 
 
@@ -394,8 +394,8 @@ def geyer_apex_return(x, p, out):
             (returned).
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, g_f, q_r_td, q_r_lo) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -418,15 +418,12 @@ def geyer_apex_return(x, p, out):
     foot_x = _c0[5]
     # stance: Geyer et al.'s approximate stance map
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
+    store(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd,))
     _o1 = carray(stack(10), 10)
     _c1 = geyer_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,) = load(_o1, 1, 6, 7, 8, 9)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -441,14 +438,13 @@ def geyer_apex_return(x, p, out):
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
             & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
             & math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
+    store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))
     return STATUS_OK
 
 

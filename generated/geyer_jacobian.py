@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:138a95b59cb50fe8
+#   support.py sha256:77264c626942dd40
+#   flight_jacobian.py sha256:6bf56f529a8d5e4e
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 
@@ -156,13 +156,10 @@ def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
     d_phase_td__q_thd_td = _pd__10*d_s_td__q_thd_td
     d_phase_td__k = _pd__10*d_s_td__k
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29],) = (omega, omega0_hat, a, b, phase_td,
-        s_td, d_omega__q_r_td, 0.0, d_omega__q_thd_td, 0.0, d_omega0_hat__q_r_td, 0.0, d_omega0_hat__q_thd_td,
-        d_omega0_hat__k, d_a__q_r_td, 0.0, d_a__q_thd_td, d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__q_thd_td,
-        d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__q_thd_td, d_phase_td__k, d_s_td__q_r_td,
-        d_s_td__q_rd_td, d_s_td__q_thd_td, d_s_td__k,)
+    store(out, (omega, omega0_hat, a, b, phase_td, s_td, d_omega__q_r_td, 0.0, d_omega__q_thd_td, 0.0,
+        d_omega0_hat__q_r_td, 0.0, d_omega0_hat__q_thd_td, d_omega0_hat__k, d_a__q_r_td, 0.0, d_a__q_thd_td,
+        d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__q_thd_td, d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td,
+        d_phase_td__q_thd_td, d_phase_td__k, d_s_td__q_r_td, d_s_td__q_rd_td, d_s_td__q_thd_td, d_s_td__k,))
     return STATUS_OK
 
 
@@ -226,8 +223,8 @@ def geyer_stance_jacobian(x, p, out):
             (returned).
     """
     # Total ops: 340
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k, g_s, q_r_lo) = (p[0], p[1], p[2], p[3], p[6])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k, g_s, q_r_lo,) = load(p, 0, 1, 2, 3, 6)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
@@ -239,32 +236,12 @@ def geyer_stance_jacobian(x, p, out):
     _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    omega = _o0[0]
-    omega0_hat = _o0[1]
-    a = _o0[2]
-    b = _o0[3]
-    phase_td = _o0[4]
-    s_td = _o0[5]
-    _j_omega__q_r_td = _o0[6]
-    _j_omega__q_thd_td = _o0[8]
-    _j_omega0_hat__q_r_td = _o0[10]
-    _j_omega0_hat__q_thd_td = _o0[12]
-    _j_omega0_hat__k = _o0[13]
-    _j_a__q_r_td = _o0[14]
-    _j_a__q_thd_td = _o0[16]
-    _j_a__k = _o0[17]
-    _j_b__q_r_td = _o0[18]
-    _j_b__q_rd_td = _o0[19]
-    _j_b__q_thd_td = _o0[20]
-    _j_b__k = _o0[21]
-    _j_phase_td__q_r_td = _o0[22]
-    _j_phase_td__q_rd_td = _o0[23]
-    _j_phase_td__q_thd_td = _o0[24]
-    _j_phase_td__k = _o0[25]
-    _j_s_td__q_r_td = _o0[26]
-    _j_s_td__q_rd_td = _o0[27]
-    _j_s_td__q_thd_td = _o0[28]
-    _j_s_td__k = _o0[29]
+    (omega, omega0_hat, a, b, phase_td, s_td, _j_omega__q_r_td, _j_omega__q_thd_td, _j_omega0_hat__q_r_td,
+        _j_omega0_hat__q_thd_td, _j_omega0_hat__k, _j_a__q_r_td, _j_a__q_thd_td, _j_a__k, _j_b__q_r_td,
+        _j_b__q_rd_td, _j_b__q_thd_td, _j_b__k, _j_phase_td__q_r_td, _j_phase_td__q_rd_td,
+        _j_phase_td__q_thd_td, _j_phase_td__k, _j_s_td__q_r_td, _j_s_td__q_rd_td, _j_s_td__q_thd_td,
+        _j_s_td__k,) = (load(_o0, 0, 1, 2, 3, 4, 5, 6, 8, 10, 12, 13, 14, 16, 17, 18, 19, 20, 21, 22, 23, 24,
+        25, 26, 27, 28, 29))
     _c1 = geyer_liftoff_phase_jac_a_b(a, b, l0, q_r_lo)
     if _c1[6] != STATUS_OK:
         return fail(out, _c1[6])
@@ -415,22 +392,16 @@ def geyer_stance_jacobian(x, p, out):
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return fail(out, STATUS_FALL)
     # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59],) = (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th,
-        bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td,
-        d_t_bottom__q_rd_td, 0.0, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, 0.0, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
-        d_bottom_q_r__q_rd_td, 0.0, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, 0.0, 0.0, 0.0, 0.0, 0.0,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, 1.0, d_bottom_q_th__q_thd_td, d_bottom_q_th__k,
-        d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, 0.0, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k,
-        0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, 0.0,
+    store(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, 0.0, d_t_bottom__q_thd_td,
+        d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, 0.0, d_t_stance__q_thd_td, d_t_stance__k,
+        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, 0.0, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, 0.0, 0.0,
+        0.0, 0.0, 0.0, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, 1.0, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, 0.0, d_bottom_q_thd__q_thd_td,
+        d_bottom_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, 0.0,
         d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, 1.0,
         d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, 0.0,
-        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k,)
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k,))
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -469,8 +440,8 @@ def geyer_apex_return_jacobian(x, p, out):
             (returned).
     """
     # Total ops: 197
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, g_f, q_r_td, q_r_lo) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -487,49 +458,25 @@ def geyer_apex_return_jacobian(x, p, out):
         q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[11]
-    _j_td_q_rd__b_xd_apex = _o0[12]
-    _j_td_q_rd__q_th_td = _o0[13]
-    _j_td_q_rd__ground = _o0[14]
-    _j_td_q_rd__retraction_rate = _o0[15]
-    _j_td_q_th__b_y_apex = _o0[16]
-    _j_td_q_th__q_th_td = _o0[18]
-    _j_td_q_th__ground = _o0[19]
-    _j_td_q_th__retraction_rate = _o0[20]
-    _j_td_q_thd__b_y_apex = _o0[21]
-    _j_td_q_thd__b_xd_apex = _o0[22]
-    _j_td_q_thd__q_th_td = _o0[23]
-    _j_td_q_thd__ground = _o0[24]
-    _j_td_q_thd__retraction_rate = _o0[25]
-    _j_foot_x__b_y_apex = _o0[31]
-    _j_foot_x__b_xd_apex = _o0[32]
-    _j_foot_x__q_th_td = _o0[33]
-    _j_foot_x__ground = _o0[34]
-    _j_foot_x__retraction_rate = _o0[35]
+    (_o0_0, _o0_1, _o0_2, _o0_3, _o0_4, foot_x, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex,
+        _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _j_td_q_rd__retraction_rate, _j_td_q_th__b_y_apex,
+        _j_td_q_th__q_th_td, _j_td_q_th__ground, _j_td_q_th__retraction_rate, _j_td_q_thd__b_y_apex,
+        _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground, _j_td_q_thd__retraction_rate,
+        _o0_26, _o0_28, _o0_29, _o0_30, _j_foot_x__b_y_apex, _j_foot_x__b_xd_apex, _j_foot_x__q_th_td,
+        _j_foot_x__ground, _j_foot_x__retraction_rate,) = (load(_o0, 0, 1, 2, 3, 4, 5, 11, 12, 13, 14, 15, 16,
+        18, 19, 20, 21, 22, 23, 24, 25, 26, 28, 29, 30, 31, 32, 33, 34, 35))
     # stance: Geyer et al.'s approximate stance map
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
+    store(_x1, (_o0_0, _o0_1, _o0_2, _o0_3,))
     _o1 = carray(stack(60), 60)
     _c1 = geyer_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    _j_t_stance__q_rd_td = _o1[16]
-    _j_t_stance__q_thd_td = _o1[18]
-    _j_liftoff_q_rd__q_rd_td = _o1[46]
-    _j_liftoff_q_rd__q_thd_td = _o1[48]
-    _j_liftoff_q_rd__k = _o1[49]
-    _j_liftoff_q_th__q_rd_td = _o1[51]
-    _j_liftoff_q_th__q_th_td = _o1[52]
-    _j_liftoff_q_th__q_thd_td = _o1[53]
-    _j_liftoff_q_th__k = _o1[54]
-    _j_liftoff_q_thd__q_rd_td = _o1[56]
-    _j_liftoff_q_thd__q_thd_td = _o1[58]
-    _j_liftoff_q_thd__k = _o1[59]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _j_t_stance__q_rd_td,
+        _j_t_stance__q_thd_td, _o1_19, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_thd_td,
+        _j_liftoff_q_rd__k, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_th__k, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k,
+        ) = (load(_o1, 1, 6, 7, 8, 9, 16, 18, 19, 46, 48, 49, 51, 52, 53, 54, 56, 58, 59))
     # chain rule through geyer_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -577,19 +524,10 @@ def geyer_apex_return_jacobian(x, p, out):
         direction, _o2))
     if _c2 != STATUS_OK:
         return fail(out, _c2)
-    next_apex_x = _o2[4]
-    _j_apex_height__q_rd = _o2[5]
-    _j_apex_height__q_th = _o2[6]
-    _j_apex_height__q_thd = _o2[7]
-    _j_apex_speed__q_rd = _o2[8]
-    _j_apex_speed__q_th = _o2[9]
-    _j_apex_speed__q_thd = _o2[10]
-    _j_t_ascent__q_rd = _o2[11]
-    _j_t_ascent__q_th = _o2[12]
-    _j_t_ascent__q_thd = _o2[13]
-    _j_next_apex_x__q_rd = _o2[17]
-    _j_next_apex_x__q_th = _o2[18]
-    _j_next_apex_x__q_thd = _o2[19]
+    (_o2_0, _o2_1, _o2_2, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _j_next_apex_x__q_rd, _j_next_apex_x__q_th, _j_next_apex_x__q_thd,) = (load(_o2,
+        0, 1, 2, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 17, 18, 19))
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -666,24 +604,16 @@ def geyer_apex_return_jacobian(x, p, out):
     d_touchdown_q_th__ground = _j_td_q_th__ground
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76], out[77],
-        out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
-        out[89], out[90],) = (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, _o0[2], d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+    store(out, (_o2_0, _o2_1, _o0_4, _o1_1, _o2_2, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
+        step_length, foot_x, foot_y, _o0_2, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
         d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__retraction_rate, d_apex_height__k,
         d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__retraction_rate, d_apex_speed__k, _o0[26], 0.0, _o0[28], _o0[29], _o0[30], 0.0,
+        d_apex_speed__retraction_rate, d_apex_speed__k, _o0_26, 0.0, _o0_28, _o0_29, _o0_30, 0.0,
         d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
-        d_t_stance__retraction_rate, _o1[19], d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
-        d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__retraction_rate, d_t_ascent__k, 0.0, 0.0, 0.0,
-        0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
-        d_liftoff_q_rd__ground, d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
+        d_t_stance__retraction_rate, _o1_19, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
+        d_t_ascent__ground, d_t_ascent__retraction_rate, d_t_ascent__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
+        d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
         d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
         d_liftoff_q_th__retraction_rate, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
         d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground,
@@ -692,7 +622,7 @@ def geyer_apex_return_jacobian(x, p, out):
         d_step_length__retraction_rate, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
         d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0,
         d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
-        d_touchdown_q_th__retraction_rate, 0.0,)
+        d_touchdown_q_th__retraction_rate, 0.0,))
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK

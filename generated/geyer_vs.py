@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 #   flight.py sha256:af2637d59c8ab493
-#   geyer.py sha256:f781cbbce76a77c5
+#   geyer.py sha256:c8ca09c74d94d05c
 # ----------------------------------------------------------------------------------------------
 """Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
 apex-return kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -155,9 +155,9 @@ def geyer_vs_stance(x, p, out):
             (returned).
     """
     # Total ops: 297
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2], p[3], p[4],
-        p[7], p[8], p[9], p[10], p[11])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 7, 8, 9,
+        10, 11))
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
@@ -347,9 +347,8 @@ def geyer_vs_stance(x, p, out):
             & math.isfinite(liftoff_q_thd) & math.isfinite(P_c_compression) & math.isfinite(P_c_decompression)
             & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,)
+    store(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,))
     return STATUS_OK
 
 
@@ -404,9 +403,9 @@ def geyer_vs_state_at(x, p, out):
             (returned).
     """
     # Total ops: 349
-    (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2], p[3], p[4],
-        p[7], p[8], p[9], p[10], p[11])
+    (t, q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 7, 8, 9,
+        10, 11))
     # inputs: finite and inside their domains
     if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
             & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c)
@@ -617,7 +616,7 @@ def geyer_vs_state_at(x, p, out):
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
+    store(out, (q_r, q_rd, q_th, q_thd,))
     return STATUS_OK
 
 
@@ -692,9 +691,9 @@ def geyer_vs_apex_return(x, p, out):
             (returned).
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2],
-        p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3,
+        4, 5, 6, 7, 8, 9, 10, 11))
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -722,15 +721,13 @@ def geyer_vs_apex_return(x, p, out):
     foot_x = _c0[5]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
+    store(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd,))
     _o1 = carray(stack(13), 13)
     _c1 = geyer_vs_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _o1_10, _o1_11, _o1_12,) = (load(_o1, 1,
+        6, 7, 8, 9, 10, 11, 12))
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -745,16 +742,14 @@ def geyer_vs_apex_return(x, p, out):
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
             & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th) & math.isfinite(_o1[10]) & math.isfinite(_o1[11])
-            & math.isfinite(_o1[12])):
+            & math.isfinite(touchdown_q_th) & math.isfinite(_o1_10) & math.isfinite(_o1_11)
+            & math.isfinite(_o1_12)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent,
-        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,
-        _o1[10], _o1[11], _o1[12],)
+    store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10, _o1_11, _o1_12,))
     return STATUS_OK
 
 

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 #   flight.py sha256:af2637d59c8ab493
-#   geyer.py sha256:f781cbbce76a77c5
+#   geyer.py sha256:c8ca09c74d94d05c
 # ----------------------------------------------------------------------------------------------
 """Gravity corrections types 0-4 (report sections 4.1-4.5): the stance, state-at-time and apex-return kernels
 of the maps gravity-type0, gravity-type1, gravity-type2, gravity-type3, gravity-type4 (one body,
@@ -19,7 +19,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -68,9 +68,8 @@ def gravity_impulse_type0(_a):
     """
     # Total ops: 21
     (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
-        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
-        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
-        _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,
+        ) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19))
     # eq (48) with 2 or 3 samples
     if samples == 2.0:
         _x0 = g_s*l0*m
@@ -100,9 +99,9 @@ def gravity_stance_shared(x, p, out, gravity_impulse):
     Arguments, returns and status: those of the kernels, then gravity_impulse.
     """
     # Total ops: 126
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, iterations, tol) = (p[0], p[1], p[2],
-        p[3], p[6], p[7], p[8], p[9], p[10], p[11], p[12])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, iterations, tol,) = (load(p, 0, 1, 2, 3,
+        6, 7, 8, 9, 10, 11, 12))
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
@@ -189,10 +188,9 @@ def gravity_stance_shared(x, p, out, gravity_impulse):
             break
         # the type's impulse rule
         _a2 = carray(stack(20), 20)
-        (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_r_td, q_rd_td,
-            q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r, i_bottom_q_th,
-            i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,)
+        store(_a2, (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b,
+            i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+            i_t_stance,))
         _c2 = gravity_impulse(_a2)
         if _c2[1] != STATUS_OK:
             return fail(out, _c2[1])
@@ -235,9 +233,8 @@ def gravity_stance_shared(x, p, out, gravity_impulse):
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
             & math.isfinite(P_c) & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        ) = (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c, passes,)
+    store(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes,))
     return STATUS_OK
 
 
@@ -319,9 +316,9 @@ def gravity_state_at_shared(x, p, out, gravity_impulse):
     Arguments, returns and status: those of the kernels, then gravity_impulse.
     """
     # Total ops: 95
-    (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, iterations, tol) = (p[0], p[1], p[2],
-        p[3], p[6], p[7], p[8], p[9], p[10], p[11], p[12])
+    (t, q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, iterations, tol,) = (load(p, 0, 1, 2, 3,
+        6, 7, 8, 9, 10, 11, 12))
     # inputs: finite and inside their domains
     if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
             & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k)
@@ -409,10 +406,9 @@ def gravity_state_at_shared(x, p, out, gravity_impulse):
             break
         # the type's impulse rule
         _a2 = carray(stack(20), 20)
-        (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-            _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19],) = (q_r_td, q_rd_td,
-            q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r, i_bottom_q_th,
-            i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,)
+        store(_a2, (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b,
+            i_bottom_q_r, i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
+            i_t_stance,))
         _c2 = gravity_impulse(_a2)
         if _c2[1] != STATUS_OK:
             return fail(out, _c2[1])
@@ -433,7 +429,7 @@ def gravity_state_at_shared(x, p, out, gravity_impulse):
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
+    store(out, (q_r, q_rd, q_th, q_thd,))
     return STATUS_OK
 
 
@@ -505,9 +501,9 @@ def gravity_apex_return_shared(x, p, out, gravity_stance):
     Arguments, returns and status: those of the kernels, then gravity_stance.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, iterations, tol) = (p[0],
-        p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, iterations, tol,) = (load(p,
+        0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -536,15 +532,13 @@ def gravity_apex_return_shared(x, p, out, gravity_stance):
     foot_x = _c0[5]
     # stance: Gravity corrections types 0-4
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
+    store(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd,))
     _o1 = carray(stack(12), 12)
     _c1 = gravity_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _o1_10, _o1_11,) = (load(_o1, 1, 6, 7, 8,
+        9, 10, 11))
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -559,15 +553,13 @@ def gravity_apex_return_shared(x, p, out, gravity_stance):
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
             & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th) & math.isfinite(_o1[10]) & math.isfinite(_o1[11])):
+            & math.isfinite(touchdown_q_th) & math.isfinite(_o1_10) & math.isfinite(_o1_11)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],
-        _o1[11],)
+    store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10, _o1_11,))
     return STATUS_OK
 
 
@@ -655,9 +647,8 @@ def gravity_impulse_type1(_a):
     """
     # Total ops: 27
     (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
-        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
-        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
-        _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,
+        ) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19))
     # eq (48) with 2 or 3 samples
     if samples == 2.0:
         _x0 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
@@ -750,9 +741,8 @@ def gravity_impulse_type2(_a):
     """
     # Total ops: 84
     (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
-        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
-        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
-        _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,
+        ) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19))
     # average leg length, eqs (55)-(61) / (67)-(75)
     if leg_length == 0.0:
         _x0 = (1.0/i_omega0_hat)
@@ -866,9 +856,8 @@ def gravity_impulse_type3(_a):
     """
     # Total ops: 28
     (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
-        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
-        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
-        _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,
+        ) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19))
     # eq (65)
     if interval == 0.0:
         _x0 = g_s*m
@@ -962,9 +951,8 @@ def gravity_impulse_type4(_a):
     """
     # Total ops: 245
     (q_r_td, q_rd_td, q_th_td, m, l0, g_s, q_r_lo, samples, interval, leg_length, i_a, i_b, i_bottom_q_r,
-        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom,
-        i_t_stance) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11],
-        _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19])
+        i_bottom_q_th, i_liftoff_q_th, i_omega0_hat, i_phase_td, i_q_thd_eff, i_t_bottom, i_t_stance,
+        ) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19))
     # eq (76)
     if interval == 0.0:
         # average leg length, eqs (55)-(61) / (67)-(75)

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:138a95b59cb50fe8
-#   geyer_jacobian.py sha256:439802d2318bb4fa
+#   support.py sha256:77264c626942dd40
+#   flight_jacobian.py sha256:6bf56f529a8d5e4e
+#   geyer_jacobian.py sha256:ab2f6e1811549f00
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b
@@ -174,14 +174,11 @@ def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
     d_phase_td__r_c = _pd__11*d_s_td__r_c
     d_phase_td__k = _pd__11*d_s_td__k
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34],) = (omega0_hat, a, b, phase_td, s_td, 0.0, 0.0, d_omega0_hat__omega, 0.0, d_omega0_hat__r_c,
+    store(out, (omega0_hat, a, b, phase_td, s_td, 0.0, 0.0, d_omega0_hat__omega, 0.0, d_omega0_hat__r_c,
         d_omega0_hat__k, 0.0, 0.0, d_a__omega, d_a__g_eff, d_a__r_c, d_a__k, d_b__q_r_td, d_b__q_rd_td,
         d_b__omega, d_b__g_eff, d_b__r_c, d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__omega,
         d_phase_td__g_eff, d_phase_td__r_c, d_phase_td__k, d_s_td__q_r_td, d_s_td__q_rd_td, d_s_td__omega,
-        d_s_td__g_eff, d_s_td__r_c, d_s_td__k,)
+        d_s_td__g_eff, d_s_td__r_c, d_s_td__k,))
     return STATUS_OK
 
 
@@ -358,8 +355,8 @@ def gravity_type5_stance_jacobian(x, p, out):
             (returned).
     """
     # Total ops: 752
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k, g_s, q_r_lo, iterations, tol) = (p[0], p[1], p[2], p[3], p[6], p[7], p[8])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k, g_s, q_r_lo, iterations, tol,) = load(p, 0, 1, 2, 3, 6, 7, 8)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
@@ -461,29 +458,12 @@ def gravity_type5_stance_jacobian(x, p, out):
             l0, k, _o0))
         if _c0 != STATUS_OK:
             return fail(out, _c0)
-        i_omega0_hat = _o0[0]
-        i_a = _o0[1]
-        i_b = _o0[2]
-        i_phase_td = _o0[3]
-        _j_i_omega0_hat__omega = _o0[7]
-        _j_i_omega0_hat__r_c = _o0[9]
-        _j_i_omega0_hat__k = _o0[10]
-        _j_i_a__omega = _o0[13]
-        _j_i_a__g_eff = _o0[14]
-        _j_i_a__r_c = _o0[15]
-        _j_i_a__k = _o0[16]
-        _j_i_b__q_r_td = _o0[17]
-        _j_i_b__q_rd_td = _o0[18]
-        _j_i_b__omega = _o0[19]
-        _j_i_b__g_eff = _o0[20]
-        _j_i_b__r_c = _o0[21]
-        _j_i_b__k = _o0[22]
-        _j_i_phase_td__q_r_td = _o0[23]
-        _j_i_phase_td__q_rd_td = _o0[24]
-        _j_i_phase_td__omega = _o0[25]
-        _j_i_phase_td__g_eff = _o0[26]
-        _j_i_phase_td__r_c = _o0[27]
-        _j_i_phase_td__k = _o0[28]
+        (i_omega0_hat, i_a, i_b, i_phase_td, _j_i_omega0_hat__omega, _j_i_omega0_hat__r_c, _j_i_omega0_hat__k,
+            _j_i_a__omega, _j_i_a__g_eff, _j_i_a__r_c, _j_i_a__k, _j_i_b__q_r_td, _j_i_b__q_rd_td,
+            _j_i_b__omega, _j_i_b__g_eff, _j_i_b__r_c, _j_i_b__k, _j_i_phase_td__q_r_td,
+            _j_i_phase_td__q_rd_td, _j_i_phase_td__omega, _j_i_phase_td__g_eff, _j_i_phase_td__r_c,
+            _j_i_phase_td__k,) = (load(_o0, 0, 1, 2, 3, 7, 9, 10, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23,
+            24, 25, 26, 27, 28))
         _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
         if _c1[6] != STATUS_OK:
             return fail(out, _c1[6])
@@ -944,25 +924,19 @@ def gravity_type5_stance_jacobian(x, p, out):
     (d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
         d_liftoff_q_rd__k, ) = (_T[37, 0], _T[37, 1], _T[37, 2], _T[37, 3], _T[37, 4], )
     # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71],) = (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th,
-        bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td,
-        d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
-        d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, 0.0, 0.0, 0.0,
-        0.0, 0.0, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
-        d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0,
-        d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
-        d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td,
-        d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0,)
+    store(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, 0.0, 0.0, 0.0, 0.0, 0.0,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
+        d_P_c__q_thd_td, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0,))
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -1002,9 +976,8 @@ def gravity_type5_apex_return_jacobian(x, p, out):
             (returned).
     """
     # Total ops: 244
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7],
-        p[8])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8)
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -1023,55 +996,27 @@ def gravity_type5_apex_return_jacobian(x, p, out):
         q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[11]
-    _j_td_q_rd__b_xd_apex = _o0[12]
-    _j_td_q_rd__q_th_td = _o0[13]
-    _j_td_q_rd__ground = _o0[14]
-    _j_td_q_rd__retraction_rate = _o0[15]
-    _j_td_q_th__b_y_apex = _o0[16]
-    _j_td_q_th__q_th_td = _o0[18]
-    _j_td_q_th__ground = _o0[19]
-    _j_td_q_th__retraction_rate = _o0[20]
-    _j_td_q_thd__b_y_apex = _o0[21]
-    _j_td_q_thd__b_xd_apex = _o0[22]
-    _j_td_q_thd__q_th_td = _o0[23]
-    _j_td_q_thd__ground = _o0[24]
-    _j_td_q_thd__retraction_rate = _o0[25]
-    _j_foot_x__b_y_apex = _o0[31]
-    _j_foot_x__b_xd_apex = _o0[32]
-    _j_foot_x__q_th_td = _o0[33]
-    _j_foot_x__ground = _o0[34]
-    _j_foot_x__retraction_rate = _o0[35]
+    (_o0_0, _o0_1, _o0_2, _o0_3, _o0_4, foot_x, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex,
+        _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _j_td_q_rd__retraction_rate, _j_td_q_th__b_y_apex,
+        _j_td_q_th__q_th_td, _j_td_q_th__ground, _j_td_q_th__retraction_rate, _j_td_q_thd__b_y_apex,
+        _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground, _j_td_q_thd__retraction_rate,
+        _o0_26, _o0_28, _o0_29, _o0_30, _j_foot_x__b_y_apex, _j_foot_x__b_xd_apex, _j_foot_x__q_th_td,
+        _j_foot_x__ground, _j_foot_x__retraction_rate,) = (load(_o0, 0, 1, 2, 3, 4, 5, 11, 12, 13, 14, 15, 16,
+        18, 19, 20, 21, 22, 23, 24, 25, 26, 28, 29, 30, 31, 32, 33, 34, 35))
     # stance: Gravity correction type 5 (time-varying momentum)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
+    store(_x1, (_o0_0, _o0_1, _o0_2, _o0_3,))
     _o1 = carray(stack(72), 72)
     _c1 = gravity_type5_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_liftoff_q_rd__q_rd_td = _o1[48]
-    _j_liftoff_q_rd__q_th_td = _o1[49]
-    _j_liftoff_q_rd__q_thd_td = _o1[50]
-    _j_liftoff_q_rd__k = _o1[51]
-    _j_liftoff_q_th__q_rd_td = _o1[53]
-    _j_liftoff_q_th__q_th_td = _o1[54]
-    _j_liftoff_q_th__q_thd_td = _o1[55]
-    _j_liftoff_q_th__k = _o1[56]
-    _j_liftoff_q_thd__q_rd_td = _o1[58]
-    _j_liftoff_q_thd__q_th_td = _o1[59]
-    _j_liftoff_q_thd__q_thd_td = _o1[60]
-    _j_liftoff_q_thd__k = _o1[61]
-    _j_P_c__q_rd_td = _o1[63]
-    _j_P_c__q_th_td = _o1[64]
-    _j_P_c__q_thd_td = _o1[65]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _o1_10, _o1_11, _j_t_stance__q_rd_td,
+        _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _o1_21, _j_liftoff_q_rd__q_rd_td,
+        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _j_P_c__q_rd_td,
+        _j_P_c__q_th_td, _j_P_c__q_thd_td, _o1_66,) = (load(_o1, 1, 6, 7, 8, 9, 10, 11, 18, 19, 20, 21, 48,
+        49, 50, 51, 53, 54, 55, 56, 58, 59, 60, 61, 63, 64, 65, 66))
     # chain rule through gravity_type5_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_th_td*_j_td_q_th__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -1132,19 +1077,10 @@ def gravity_type5_apex_return_jacobian(x, p, out):
         direction, _o2))
     if _c2 != STATUS_OK:
         return fail(out, _c2)
-    next_apex_x = _o2[4]
-    _j_apex_height__q_rd = _o2[5]
-    _j_apex_height__q_th = _o2[6]
-    _j_apex_height__q_thd = _o2[7]
-    _j_apex_speed__q_rd = _o2[8]
-    _j_apex_speed__q_th = _o2[9]
-    _j_apex_speed__q_thd = _o2[10]
-    _j_t_ascent__q_rd = _o2[11]
-    _j_t_ascent__q_th = _o2[12]
-    _j_t_ascent__q_thd = _o2[13]
-    _j_next_apex_x__q_rd = _o2[17]
-    _j_next_apex_x__q_th = _o2[18]
-    _j_next_apex_x__q_thd = _o2[19]
+    (_o2_0, _o2_1, _o2_2, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _j_next_apex_x__q_rd, _j_next_apex_x__q_th, _j_next_apex_x__q_thd,) = (load(_o2,
+        0, 1, 2, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 17, 18, 19))
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -1221,25 +1157,15 @@ def gravity_type5_apex_return_jacobian(x, p, out):
     d_touchdown_q_th__ground = _j_td_q_th__ground
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76], out[77],
-        out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
-        out[89], out[90], out[91], out[92], out[93], out[94], out[95], out[96], out[97], out[98], out[99],
-        out[100], out[101], out[102], out[103], out[104],) = (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2],
-        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o0[2], _o1[10],
-        _o1[11], d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
-        d_apex_height__ground, d_apex_height__retraction_rate, d_apex_height__k, d_apex_speed__b_y_apex,
-        d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__retraction_rate,
-        d_apex_speed__k, _o0[26], 0.0, _o0[28], _o0[29], _o0[30], 0.0, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__retraction_rate, _o1[21],
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground,
-        d_t_ascent__retraction_rate, d_t_ascent__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
+    store(out, (_o2_0, _o2_1, _o0_4, _o1_1, _o2_2, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
+        step_length, foot_x, foot_y, _o0_2, _o1_10, _o1_11, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__retraction_rate, d_apex_height__k,
+        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
+        d_apex_speed__retraction_rate, d_apex_speed__k, _o0_26, 0.0, _o0_28, _o0_29, _o0_30, 0.0,
+        d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
+        d_t_stance__retraction_rate, _o1_21, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
+        d_t_ascent__ground, d_t_ascent__retraction_rate, d_t_ascent__k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground,
         d_liftoff_q_rd__retraction_rate, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
         d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
         d_liftoff_q_th__retraction_rate, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
@@ -1250,7 +1176,7 @@ def gravity_type5_apex_return_jacobian(x, p, out):
         d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0,
         d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
         d_touchdown_q_th__retraction_rate, 0.0, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td,
-        d_P_c__ground, d_P_c__retraction_rate, _o1[66], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
+        d_P_c__ground, d_P_c__retraction_rate, _o1_66, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,))
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK

@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 #   flight.py sha256:af2637d59c8ab493
-#   geyer.py sha256:f781cbbce76a77c5
-#   geyer_vs.py sha256:989b828600db2cf3
-#   gravity.py sha256:e6c6417abbdd707c
-#   gravity_type5.py sha256:2521abfe9185b31a
+#   geyer.py sha256:c8ca09c74d94d05c
+#   geyer_vs.py sha256:c79a2adb8a06a196
+#   gravity.py sha256:7fa3908e51a0d2d9
+#   gravity_type5.py sha256:7edf55e403f7d7f8
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -21,7 +21,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
 from .geyer_vs import geyer_vs_stance
@@ -202,9 +202,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    _S = carray(stack(156), (13, 12))
-    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, G, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5],
-        _S[6], _S[7], _S[8], _S[9], _S[10], _S[11], _S[12])
+    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, G, Q_next, P_next,) = node_arrays(stack(156), 13, 12)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
@@ -406,9 +404,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    _S = carray(stack(144), (12, 12))
-    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5],
-        _S[6], _S[7], _S[8], _S[9], _S[10], _S[11])
+    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, Q_next, P_next,) = node_arrays(stack(144), 12, 12)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)
@@ -581,15 +577,16 @@ def zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_l
     # Total ops: 0
     # stance: Geyer et al.'s approximate stance map
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(7), 7)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo,)
+    store(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo,))
     _o0 = carray(stack(10), 10)
     _c0 = geyer_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -638,8 +635,8 @@ def iterative_core(_a):
     """
     # Total ops: 15
     (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, held, nodes, iterations, tol) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5],
-        _a[6], _a[7], _a[8], _a[9], _a[10], _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18])
+        z_lo_q_th, z_lo_q_thd, held, nodes, iterations, tol,) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
+        11, 12, 13, 14, 15, 16, 17, 18))
     # compression half, k_c (report 5.2.1)
     _c0 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -712,16 +709,16 @@ def zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # Total ops: 0
     # stance: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(13), 13)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 0.0,)
+    store(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 1.0, 0.0,))
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type0_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -734,16 +731,16 @@ def zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # Total ops: 0
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(13), 13)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
+    store(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,))
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type1_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -756,16 +753,16 @@ def zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # Total ops: 0
     # stance: Gravity correction type 2 (average leg length)
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(13), 13)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
+    store(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,))
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type2_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -778,16 +775,16 @@ def zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # Total ops: 0
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(13), 13)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
+    store(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,))
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type3_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -800,16 +797,16 @@ def zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # Total ops: 0
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(13), 13)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],
-        _p0[12],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,)
+    store(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0, 100.0, 1e-12,))
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type4_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -822,16 +819,16 @@ def zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # Total ops: 0
     # stance: Gravity correction type 5 (time-varying momentum)
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(9), 9)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8],) = (m, l0, k_c, g_s, NAN, q_r_td,
-        q_r_lo, 100.0, 1e-12,)
+    store(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 100.0, 1e-12,))
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type5_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -844,16 +841,16 @@ def zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     # Total ops: 0
     # stance: Simple variable-stiffness map (Geyer et al. per half)
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
+    store(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td,))
     _p0 = carray(stack(12), 12)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
-        l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12,)
+    store(_p0, (m, l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12,))
     _o0 = carray(stack(13), 13)
     _c0 = geyer_vs_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return _NAN5 + (_c0,)
+    (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9,) = load(_o0, 2, 4, 5, 8, 9)
     # (internal helper: its callers check that their outputs are finite)
-    return (_o0[2], _o0[4], _o0[5], _o0[8], _o0[9], STATUS_OK)
+    return (_o0_2, _o0_4, _o0_5, _o0_8, _o0_9, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -870,9 +867,8 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
     Arguments, returns and status: those of the kernels, then zeroth, constant0.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9],
-        p[10])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
@@ -897,10 +893,8 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
     z_lo_q_thd = _c0[4]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, nodes,
-        iterations, tol,)
+    store(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th,
+        z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, nodes, iterations, tol,))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -921,9 +915,8 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
             & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
             & math.isfinite(liftoff_q_thd) & math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10],) = (t_bottom,
-        t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, passes,)
+    store(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes,))
     return STATUS_OK
 
 
@@ -1004,9 +997,9 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     Arguments, returns and status: those of the kernels, then iterative_stance_zeroth.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5],
-        p[6], p[7], p[8], p[9], p[10])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8,
+        9, 10))
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -1032,15 +1025,12 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
+    store(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd,))
     _o1 = carray(stack(11), 11)
     _c1 = iterative_stance_zeroth(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _o1_10,) = load(_o1, 1, 6, 7, 8, 9, 10)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1055,14 +1045,13 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
             & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th) & math.isfinite(_o1[10])):
+            & math.isfinite(touchdown_q_th) & math.isfinite(_o1_10)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1[10],)
+    store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10,))
     return STATUS_OK
 
 

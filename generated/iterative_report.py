@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 #   flight.py sha256:af2637d59c8ab493
-#   geyer_vs.py sha256:989b828600db2cf3
-#   iterative.py sha256:c686fe25a46ed388
+#   geyer_vs.py sha256:c79a2adb8a06a196
+#   iterative.py sha256:f663371f278af016
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -19,7 +19,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer_vs import bottom_quartic
 from .iterative import (zeroth_geyer, zeroth_geyer_vs, zeroth_gravity_type0, zeroth_gravity_type1,
@@ -222,9 +222,8 @@ def report_core(_a):
     """
     # Total ops: 149
     (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, held, variant, iterations, bottom_length) = (_a[0], _a[1], _a[2], _a[3], _a[4],
-        _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17],
-        _a[18])
+        z_lo_q_th, z_lo_q_thd, held, variant, iterations, bottom_length,) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7,
+        8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18))
     # the compression half as printed
     _c0 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, variant, iterations, bottom_length))
@@ -357,9 +356,8 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth, constant0):
     Arguments, returns and status: those of the kernels, then zeroth, constant0.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
@@ -384,10 +382,8 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth, constant0):
     z_lo_q_thd = _c0[4]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
-        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, variant,
-        iterations, bottom_length,)
+    store(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th,
+        z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, variant, iterations, bottom_length,))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -407,9 +403,8 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth, constant0):
             & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
             & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
-        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd,)
+    store(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd,))
     return STATUS_OK
 
 
@@ -492,9 +487,9 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     Arguments, returns and status: those of the kernels, then iterative_report_stance_zeroth.
     """
     # Total ops: 3
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length,) = (load(p, 0, 1, 2, 3, 4,
+        5, 6, 7, 8, 9, 10))
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -520,15 +515,12 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
+    store(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd,))
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
+    (_o1_1, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,) = load(_o1, 1, 6, 7, 8, 9)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -543,14 +535,13 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1[1]) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
+            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
             & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
             & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
             & math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,)
+    store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))
     return STATUS_OK
 
 

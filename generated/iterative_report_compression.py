@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
-#   iterative.py sha256:c686fe25a46ed388
-#   iterative_report.py sha256:18155f39357e22fc
+#   support.py sha256:77264c626942dd40
+#   iterative.py sha256:f663371f278af016
+#   iterative_report.py sha256:b1aae0738c6a43e6
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .iterative import (zeroth_geyer, zeroth_geyer_vs, zeroth_gravity_type0, zeroth_gravity_type1,
     zeroth_gravity_type2, zeroth_gravity_type3, zeroth_gravity_type4, zeroth_gravity_type5, zeroth_held)
 from .iterative_report import report_compression
@@ -44,8 +44,8 @@ def iterative_report_compression_zeroth_shared(x, p, out, zeroth):
     Arguments, returns and status: those of the kernels, then zeroth.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_c, g_s, variant, iterations, bottom_length,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
@@ -88,7 +88,7 @@ def iterative_report_compression_zeroth_shared(x, p, out, zeroth):
     if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
             & math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
+    store(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))
     return STATUS_OK
 
 

@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 #   flight.py sha256:af2637d59c8ab493
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom ->
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -62,8 +62,8 @@ def iterative_report_decompression(x, p, out):
             (returned).
     """
     # Total ops: 140
-    (q_r_b, q_rd_b, q_th_b, q_thd_b) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_d, g_s, q_r_lo, variant, iterations) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
+    (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_d, g_s, q_r_lo, variant, iterations,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
@@ -172,7 +172,7 @@ def iterative_report_decompression(x, p, out):
     if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
             & math.isfinite(end_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
+    store(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))
     return STATUS_OK
 
 
@@ -224,8 +224,8 @@ def iterative_report_decompression_apex(x, p, out):
             (returned).
     """
     # Total ops: 8
-    (q_r_b, q_rd_b, q_th_b, q_thd_b) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_d, g_s, q_r_lo, variant, iterations, g_f) = (p[0], p[1], p[2], p[3], p[5], p[6], p[7], p[4])
+    (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_d, g_s, q_r_lo, variant, iterations, g_f,) = load(p, 0, 1, 2, 3, 5, 6, 7, 4)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
@@ -237,18 +237,14 @@ def iterative_report_decompression_apex(x, p, out):
         return fail(out, STATUS_INVALID_INPUT)
     # the half: Iterative decompression half as printed (bottom to liftoff, k_d)
     _x0 = carray(stack(4), 4)
-    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_b, q_rd_b, q_th_b, q_thd_b,)
+    store(_x0, (q_r_b, q_rd_b, q_th_b, q_thd_b,))
     _p0 = carray(stack(7), 7)
-    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_d, g_s, q_r_lo, variant, iterations,
-        )
+    store(_p0, (m, l0, k_d, g_s, q_r_lo, variant, iterations,))
     _o0 = carray(stack(5), 5)
     _c0 = iterative_report_decompression(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    liftoff_q_r = _o0[1]
-    liftoff_q_rd = _o0[2]
-    liftoff_q_th = _o0[3]
-    liftoff_q_thd = _o0[4]
+    (_o0_0, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,) = load(_o0, 0, 1, 2, 3, 4)
     # the direction the body moves at liftoff
     direction = (0.0 if -liftoff_q_r*liftoff_q_thd*math.cos(liftoff_q_th)
         - liftoff_q_rd*math.sin(liftoff_q_th) == 0 else math.copysign(1,
@@ -261,12 +257,12 @@ def iterative_report_decompression_apex(x, p, out):
     apex_speed = _c1[1]
     t_ascent = _c1[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(_o0[0])
+    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(_o0_0)
             & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
             & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7],) = (apex_height, apex_speed, _o0[0],
-        t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,)
+    store(out, (apex_height, apex_speed, _o0_0, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,))
     return STATUS_OK
 
 

@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
-#   flight_jacobian.py sha256:138a95b59cb50fe8
-#   geyer_vs_jacobian.py sha256:134305d9642ed1b0
-#   iterative_jacobian.py sha256:cbb94ea65235520c
+#   support.py sha256:77264c626942dd40
+#   flight_jacobian.py sha256:6bf56f529a8d5e4e
+#   geyer_vs_jacobian.py sha256:3759677b611899d7
+#   iterative_jacobian.py sha256:a24ba462d5f6574a
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -19,7 +19,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_vs_jacobian import bottom_quartic_jac_p_b_E_ab_k_c
@@ -68,9 +68,8 @@ def report_compression_jvp6_4eaacb(_a, out):
         bottom_length, d_z_b_q_r__0, d_z_b_q_th__0, d_z_b_q_thd__0, d_z_b_q_r__1, d_z_b_q_th__1,
         d_z_b_q_thd__1, d_z_b_q_r__2, d_z_b_q_th__2, d_z_b_q_thd__2, d_z_b_q_r__3, d_z_b_q_th__3,
         d_z_b_q_thd__3, d_z_b_q_r__4, d_z_b_q_th__4, d_z_b_q_thd__4, d_z_b_q_r__5, d_z_b_q_th__5,
-        d_z_b_q_thd__5) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9], _a[10],
-        _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19], _a[20], _a[21], _a[22],
-        _a[23], _a[24], _a[25], _a[26], _a[27], _a[28], _a[29], _a[30], _a[31])
+        d_z_b_q_thd__5,) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20,
+        21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31))
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
@@ -430,16 +429,12 @@ def report_compression_jvp6_4eaacb(_a, out):
     d_bottom_q_th__4 = d_c_Q__4
     d_bottom_q_th__5 = d_c_Q__5
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41],) = (t_bottom, bottom_q_r, 0.0,
-        bottom_q_th, bottom_q_thd, E_ab, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2, d_t_bottom__3,
-        d_t_bottom__4, d_t_bottom__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2, d_bottom_q_r__3,
-        d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_bottom_q_th__0, d_bottom_q_th__1,
-        d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5, d_bottom_q_thd__0,
-        d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4, d_bottom_q_thd__5,
-        d_E_ab__0, d_E_ab__1, d_E_ab__2, d_E_ab__3, d_E_ab__4, 0.0,)
+    store(out, (t_bottom, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, E_ab, d_t_bottom__0, d_t_bottom__1,
+        d_t_bottom__2, d_t_bottom__3, d_t_bottom__4, d_t_bottom__5, d_bottom_q_r__0, d_bottom_q_r__1,
+        d_bottom_q_r__2, d_bottom_q_r__3, d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        d_bottom_q_th__0, d_bottom_q_th__1, d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4,
+        d_bottom_q_th__5, d_bottom_q_thd__0, d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3,
+        d_bottom_q_thd__4, d_bottom_q_thd__5, d_E_ab__0, d_E_ab__1, d_E_ab__2, d_E_ab__3, d_E_ab__4, 0.0,))
     return STATUS_OK
 
 
@@ -474,58 +469,28 @@ def report_core_jvp6_b60fdf(_a, out):
         d_z_lo_q_th__1, d_z_lo_q_thd__1, d_z_b_q_r__2, d_z_b_q_th__2, d_z_b_q_thd__2, d_z_lo_q_th__2,
         d_z_lo_q_thd__2, d_z_b_q_r__3, d_z_b_q_th__3, d_z_b_q_thd__3, d_z_lo_q_th__3, d_z_lo_q_thd__3,
         d_z_b_q_r__4, d_z_b_q_th__4, d_z_b_q_thd__4, d_z_lo_q_th__4, d_z_lo_q_thd__4, d_z_b_q_r__5,
-        d_z_b_q_th__5, d_z_b_q_thd__5, d_z_lo_q_th__5, d_z_lo_q_thd__5) = (_a[0], _a[1], _a[2], _a[3], _a[4],
-        _a[5], _a[6], _a[7], _a[8], _a[9], _a[10], _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17],
-        _a[18], _a[19], _a[20], _a[21], _a[22], _a[23], _a[24], _a[25], _a[26], _a[27], _a[28], _a[29],
-        _a[30], _a[31], _a[32], _a[33], _a[34], _a[35], _a[36], _a[37], _a[38], _a[39], _a[40], _a[41],
-        _a[42], _a[43], _a[44], _a[45], _a[46], _a[47], _a[48])
+        d_z_b_q_th__5, d_z_b_q_thd__5, d_z_lo_q_th__5, d_z_lo_q_thd__5,) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7,
+        8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33,
+        34, 35, 36, 37, 38, 39, 40, 41, 42, 43, 44, 45, 46, 47, 48))
     # the compression half as printed
     _a0 = carray(stack(32), 32)
-    (_a0[0], _a0[1], _a0[2], _a0[3], _a0[4], _a0[5], _a0[6], _a0[7], _a0[8], _a0[9], _a0[10], _a0[11],
-        _a0[12], _a0[13], _a0[14], _a0[15], _a0[16], _a0[17], _a0[18], _a0[19], _a0[20], _a0[21], _a0[22],
-        _a0[23], _a0[24], _a0[25], _a0[26], _a0[27], _a0[28], _a0[29], _a0[30], _a0[31],) = (q_r_td, q_rd_td,
-        q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, variant, iterations, bottom_length,
-        d_z_b_q_r__0, d_z_b_q_th__0, d_z_b_q_thd__0, d_z_b_q_r__1, d_z_b_q_th__1, d_z_b_q_thd__1,
-        d_z_b_q_r__2, d_z_b_q_th__2, d_z_b_q_thd__2, d_z_b_q_r__3, d_z_b_q_th__3, d_z_b_q_thd__3,
-        d_z_b_q_r__4, d_z_b_q_th__4, d_z_b_q_thd__4, d_z_b_q_r__5, d_z_b_q_th__5, d_z_b_q_thd__5,)
+    store(_a0, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, variant,
+        iterations, bottom_length, d_z_b_q_r__0, d_z_b_q_th__0, d_z_b_q_thd__0, d_z_b_q_r__1, d_z_b_q_th__1,
+        d_z_b_q_thd__1, d_z_b_q_r__2, d_z_b_q_th__2, d_z_b_q_thd__2, d_z_b_q_r__3, d_z_b_q_th__3,
+        d_z_b_q_thd__3, d_z_b_q_r__4, d_z_b_q_th__4, d_z_b_q_thd__4, d_z_b_q_r__5, d_z_b_q_th__5,
+        d_z_b_q_thd__5,))
     _o0 = carray(stack(42), 42)
     _c0 = report_compression_jvp6_4eaacb(_a0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    t_bottom = _o0[0]
-    bottom_q_r = _o0[1]
-    bottom_q_th = _o0[3]
-    bottom_q_thd = _o0[4]
-    E_ab = _o0[5]
-    d_t_bottom__0 = _o0[6]
-    d_t_bottom__1 = _o0[7]
-    d_t_bottom__2 = _o0[8]
-    d_t_bottom__3 = _o0[9]
-    d_t_bottom__4 = _o0[10]
-    d_t_bottom__5 = _o0[11]
-    d_bottom_q_r__0 = _o0[12]
-    d_bottom_q_r__1 = _o0[13]
-    d_bottom_q_r__2 = _o0[14]
-    d_bottom_q_r__3 = _o0[15]
-    d_bottom_q_r__4 = _o0[16]
-    d_bottom_q_r__5 = _o0[17]
-    d_bottom_q_th__0 = _o0[24]
-    d_bottom_q_th__1 = _o0[25]
-    d_bottom_q_th__2 = _o0[26]
-    d_bottom_q_th__3 = _o0[27]
-    d_bottom_q_th__4 = _o0[28]
-    d_bottom_q_th__5 = _o0[29]
-    d_bottom_q_thd__0 = _o0[30]
-    d_bottom_q_thd__1 = _o0[31]
-    d_bottom_q_thd__2 = _o0[32]
-    d_bottom_q_thd__3 = _o0[33]
-    d_bottom_q_thd__4 = _o0[34]
-    d_bottom_q_thd__5 = _o0[35]
-    d_E_ab__0 = _o0[36]
-    d_E_ab__1 = _o0[37]
-    d_E_ab__2 = _o0[38]
-    d_E_ab__3 = _o0[39]
-    d_E_ab__4 = _o0[40]
+    (t_bottom, bottom_q_r, _o0_2, bottom_q_th, bottom_q_thd, E_ab, d_t_bottom__0, d_t_bottom__1,
+        d_t_bottom__2, d_t_bottom__3, d_t_bottom__4, d_t_bottom__5, d_bottom_q_r__0, d_bottom_q_r__1,
+        d_bottom_q_r__2, d_bottom_q_r__3, d_bottom_q_r__4, d_bottom_q_r__5, d_bottom_q_th__0,
+        d_bottom_q_th__1, d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5,
+        d_bottom_q_thd__0, d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4,
+        d_bottom_q_thd__5, d_E_ab__0, d_E_ab__1, d_E_ab__2, d_E_ab__3, d_E_ab__4,) = (load(_o0, 0, 1, 2, 3, 4,
+        5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37,
+        38, 39, 40))
     # E_ba of (98): the energy jump of the stiffness switch
     _x0 = (-bottom_q_r + l0)**2
     _x1 = -0.5*k_c + (0.5)*k_d
@@ -925,24 +890,17 @@ def report_core_jvp6_b60fdf(_a, out):
     d_liftoff_q_th__4 = d_d_Q__4
     d_liftoff_q_th__5 = d_d_Q__5
     # (internal helper: its callers check that their outputs are finite)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69],) = (t_bottom, t_stance, bottom_q_r, _o0[2], bottom_q_th, bottom_q_thd,
-        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2,
-        d_t_bottom__3, d_t_bottom__4, d_t_bottom__5, d_t_stance__0, d_t_stance__1, d_t_stance__2,
-        d_t_stance__3, d_t_stance__4, d_t_stance__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2,
-        d_bottom_q_r__3, d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_bottom_q_th__0,
-        d_bottom_q_th__1, d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5,
-        d_bottom_q_thd__0, d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4,
-        d_bottom_q_thd__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__0, d_liftoff_q_rd__1,
-        d_liftoff_q_rd__2, d_liftoff_q_rd__3, d_liftoff_q_rd__4, d_liftoff_q_rd__5, d_liftoff_q_th__0,
-        d_liftoff_q_th__1, d_liftoff_q_th__2, d_liftoff_q_th__3, d_liftoff_q_th__4, d_liftoff_q_th__5,
-        d_liftoff_q_thd__0, d_liftoff_q_thd__1, d_liftoff_q_thd__2, d_liftoff_q_thd__3, d_liftoff_q_thd__4,
-        d_liftoff_q_thd__5,)
+    store(out, (t_bottom, t_stance, bottom_q_r, _o0_2, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2, d_t_bottom__3,
+        d_t_bottom__4, d_t_bottom__5, d_t_stance__0, d_t_stance__1, d_t_stance__2, d_t_stance__3,
+        d_t_stance__4, d_t_stance__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2, d_bottom_q_r__3,
+        d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_bottom_q_th__0, d_bottom_q_th__1,
+        d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5, d_bottom_q_thd__0,
+        d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4, d_bottom_q_thd__5, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__0, d_liftoff_q_rd__1, d_liftoff_q_rd__2, d_liftoff_q_rd__3,
+        d_liftoff_q_rd__4, d_liftoff_q_rd__5, d_liftoff_q_th__0, d_liftoff_q_th__1, d_liftoff_q_th__2,
+        d_liftoff_q_th__3, d_liftoff_q_th__4, d_liftoff_q_th__5, d_liftoff_q_thd__0, d_liftoff_q_thd__1,
+        d_liftoff_q_thd__2, d_liftoff_q_thd__3, d_liftoff_q_thd__4, d_liftoff_q_thd__5,))
     return STATUS_OK
 
 
@@ -963,9 +921,8 @@ def iterative_report_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac, consta
     Arguments, returns and status: those of the kernels, then zeroth_jac, constant0.
     """
     # Total ops: 0
-    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
-    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[7],
-        p[8], p[9], p[10])
+    (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
+    (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
             & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
@@ -984,34 +941,35 @@ def iterative_report_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac, consta
     _c0 = zeroth_jac(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
+    (_o0_0, _o0_1, _o0_2, _o0_3, _o0_4, _o0_5, _o0_6, _o0_7, _o0_8, _o0_9, _o0_10, _o0_11, _o0_12, _o0_13,
+        _o0_14, _o0_15, _o0_16, _o0_17, _o0_18, _o0_19, _o0_20, _o0_21, _o0_22, _o0_23, _o0_24, _o0_25,
+        _o0_26, _o0_27, _o0_28, _o0_29, _o0_30, _o0_31, _o0_32, _o0_33, _o0_34,) = (load(_o0, 0, 1, 2, 3, 4,
+        5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31,
+        32, 33, 34))
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
-        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
-        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
-        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
-        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
-        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], constant0, variant, iterations, bottom_length, _o0[5],
-        _o0[11], _o0[17], _o0[23], _o0[29], _o0[6], _o0[12], _o0[18], _o0[24], _o0[30], _o0[7], _o0[13],
-        _o0[19], _o0[25], _o0[31], _o0[8], _o0[14], _o0[20], _o0[26], _o0[32], _o0[9], _o0[15], _o0[21],
-        _o0[27], _o0[33], _o0[10], _o0[16], _o0[22], _o0[28], _o0[34],)
+    store(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0_0, _o0_1, _o0_2, _o0_3,
+        _o0_4, constant0, variant, iterations, bottom_length, _o0_5, _o0_11, _o0_17, _o0_23, _o0_29, _o0_6,
+        _o0_12, _o0_18, _o0_24, _o0_30, _o0_7, _o0_13, _o0_19, _o0_25, _o0_31, _o0_8, _o0_14, _o0_20, _o0_26,
+        _o0_32, _o0_9, _o0_15, _o0_21, _o0_27, _o0_33, _o0_10, _o0_16, _o0_22, _o0_28, _o0_34,))
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    (_o1_0, _o1_1, _o1_2, _o1_3, _o1_4, _o1_5, _o1_6, _o1_7, _o1_8, _o1_9, _o1_10, _o1_11, _o1_12, _o1_13,
+        _o1_14, _o1_15, _o1_16, _o1_17, _o1_18, _o1_19, _o1_20, _o1_21, _o1_22, _o1_23, _o1_24, _o1_25,
+        _o1_26, _o1_27, _o1_34, _o1_35, _o1_36, _o1_37, _o1_38, _o1_39, _o1_40, _o1_41, _o1_42, _o1_43,
+        _o1_44, _o1_45, _o1_52, _o1_53, _o1_54, _o1_55, _o1_56, _o1_57, _o1_58, _o1_59, _o1_60, _o1_61,
+        _o1_62, _o1_63, _o1_64, _o1_65, _o1_66, _o1_67, _o1_68, _o1_69,) = (load(_o1, 0, 1, 2, 3, 4, 5, 6, 7,
+        8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 34, 35, 36, 37, 38, 39,
+        40, 41, 42, 43, 44, 45, 52, 53, 54, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64, 65, 66, 67, 68, 69))
     # every output finite, or the inputs were far outside a physical range
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
-        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
-        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
-        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
-        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
+    store(out, (_o1_0, _o1_1, _o1_2, _o1_3, _o1_4, _o1_5, _o1_6, _o1_7, _o1_8, _o1_9, _o1_10, _o1_11, _o1_12,
+        _o1_13, _o1_14, _o1_15, _o1_16, _o1_17, _o1_18, _o1_19, _o1_20, _o1_21, _o1_22, _o1_23, _o1_24,
+        _o1_25, _o1_26, _o1_27, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1_34, _o1_35, _o1_36, _o1_37, _o1_38, _o1_39,
+        _o1_40, _o1_41, _o1_42, _o1_43, _o1_44, _o1_45, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1_52, _o1_53, _o1_54,
+        _o1_55, _o1_56, _o1_57, _o1_58, _o1_59, _o1_60, _o1_61, _o1_62, _o1_63, _o1_64, _o1_65, _o1_66,
+        _o1_67, _o1_68, _o1_69,))
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
     return STATUS_OK
@@ -1096,11 +1054,9 @@ def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
         _j_td_q_th__ground, _j_td_q_th__q_th_td, _j_td_q_th__retraction_rate, _j_td_q_thd__b_xd_apex,
         _j_td_q_thd__b_y_apex, _j_td_q_thd__ground, _j_td_q_thd__q_th_td, _j_td_q_thd__retraction_rate,
         b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
-        t_descent, t_stance, td_q_th) = (_a[0], _a[1], _a[2], _a[3], _a[4], _a[5], _a[6], _a[7], _a[8], _a[9],
-        _a[10], _a[11], _a[12], _a[13], _a[14], _a[15], _a[16], _a[17], _a[18], _a[19], _a[20], _a[21],
-        _a[22], _a[23], _a[24], _a[25], _a[26], _a[27], _a[28], _a[29], _a[30], _a[31], _a[32], _a[33],
-        _a[34], _a[35], _a[36], _a[37], _a[38], _a[39], _a[40], _a[41], _a[42], _a[43], _a[44], _a[45],
-        _a[46], _a[47], _a[48], _a[49], _a[50], _a[51], _a[52], _a[53], _a[54])
+        t_descent, t_stance, td_q_th,) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,
+        17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39, 40, 41,
+        42, 43, 44, 45, 46, 47, 48, 49, 50, 51, 52, 53, 54))
     # chain rule through iterative_report_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_th_td*_j_td_q_th__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -1152,19 +1108,10 @@ def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
         direction, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    next_apex_x = _o0[4]
-    _j_apex_height__q_rd = _o0[5]
-    _j_apex_height__q_th = _o0[6]
-    _j_apex_height__q_thd = _o0[7]
-    _j_apex_speed__q_rd = _o0[8]
-    _j_apex_speed__q_th = _o0[9]
-    _j_apex_speed__q_thd = _o0[10]
-    _j_t_ascent__q_rd = _o0[11]
-    _j_t_ascent__q_th = _o0[12]
-    _j_t_ascent__q_thd = _o0[13]
-    _j_next_apex_x__q_rd = _o0[17]
-    _j_next_apex_x__q_th = _o0[18]
-    _j_next_apex_x__q_thd = _o0[19]
+    (_o0_0, _o0_1, _o0_2, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _j_next_apex_x__q_rd, _j_next_apex_x__q_th, _j_next_apex_x__q_thd,) = (load(_o0,
+        0, 1, 2, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 17, 18, 19))
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -1261,23 +1208,14 @@ def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by the role kernels that return them)
-    if not (math.isfinite(_o0[0]) & math.isfinite(_o0[1]) & math.isfinite(t_descent) & math.isfinite(t_stance)
-            & math.isfinite(_o0[2]) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
+    if not (math.isfinite(_o0_0) & math.isfinite(_o0_1) & math.isfinite(t_descent) & math.isfinite(t_stance)
+            & math.isfinite(_o0_2) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
             & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd) & math.isfinite(step_length)
             & math.isfinite(foot_x) & math.isfinite(foot_y) & math.isfinite(touchdown_q_th)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
-        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
-        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
-        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
-        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
-        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
-        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76], out[77],
-        out[78], out[79], out[80], out[81], out[82], out[83], out[84], out[85], out[86], out[87], out[88],
-        out[89], out[90], out[91], out[92], out[93], out[94], out[95], out[96], out[97], out[98], out[99],
-        out[100], out[101], out[102], out[103],) = (_o0[0], _o0[1], t_descent, t_stance, _o0[2], liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,
-        d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
+    store(out, (_o0_0, _o0_1, t_descent, t_stance, _o0_2, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, d_apex_height__b_y_apex,
+        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
         d_apex_height__retraction_rate, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex,
         d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__retraction_rate,
         d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td,
@@ -1295,7 +1233,7 @@ def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
         d_step_length__retraction_rate, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
         d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__retraction_rate, 0.0, 0.0, -1.0,
         0.0, 0.0, 1.0, 0.0, 0.0, 0.0, d_touchdown_q_th__b_y_apex, 0.0, d_touchdown_q_th__q_th_td,
-        d_touchdown_q_th__ground, d_touchdown_q_th__retraction_rate, 0.0, 0.0,)
+        d_touchdown_q_th__ground, d_touchdown_q_th__retraction_rate, 0.0, 0.0,))
     return STATUS_OK
 
 
@@ -1316,9 +1254,9 @@ def iterative_report_apex_return_jacobian_zeroth_shared(x, p, out, iterative_rep
     Arguments, returns and status: those of the kernels, then iterative_report_stance_jacobian_zeroth.
     """
     # Total ops: 1
-    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4])
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3],
-        p[4], p[5], p[6], p[7], p[8], p[9], p[10])
+    (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length,) = (load(p, 0, 1, 2, 3, 4,
+        5, 6, 7, 8, 9, 10))
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
             & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
@@ -1338,25 +1276,28 @@ def iterative_report_apex_return_jacobian_zeroth_shared(x, p, out, iterative_rep
         q_th_td, q_r_td, g_f, ground, retraction_rate, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
+    (_o0_0, _o0_1, _o0_2, _o0_3, _o0_4, _o0_5, _o0_11, _o0_12, _o0_13, _o0_14, _o0_15, _o0_16, _o0_18, _o0_19,
+        _o0_20, _o0_21, _o0_22, _o0_23, _o0_24, _o0_25, _o0_26, _o0_28, _o0_29, _o0_30, _o0_31, _o0_32,
+        _o0_33, _o0_34, _o0_35,) = (load(_o0, 0, 1, 2, 3, 4, 5, 11, 12, 13, 14, 15, 16, 18, 19, 20, 21, 22,
+        23, 24, 25, 26, 28, 29, 30, 31, 32, 33, 34, 35))
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
+    store(_x1, (_o0_0, _o0_1, _o0_2, _o0_3,))
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
+    (_o1_1, _o1_6, _o1_7, _o1_8, _o1_9, _o1_17, _o1_18, _o1_19, _o1_20, _o1_21, _o1_53, _o1_54, _o1_55,
+        _o1_56, _o1_57, _o1_59, _o1_60, _o1_61, _o1_62, _o1_63, _o1_65, _o1_66, _o1_67, _o1_68, _o1_69,
+        ) = (load(_o1, 1, 6, 7, 8, 9, 17, 18, 19, 20, 21, 53, 54, 55, 56, 57, 59, 60, 61, 62, 63, 65, 66, 67,
+        68, 69))
     # the code shared between choices
     _a2 = carray(stack(55), 55)
-    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
-        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
-        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
-        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
-        _a2[45], _a2[46], _a2[47], _a2[48], _a2[49], _a2[50], _a2[51], _a2[52], _a2[53], _a2[54],) = (_o0[32],
-        _o0[31], _o0[34], _o0[33], _o0[35], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62], _o1[63],
-        _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[26], _o0[29], _o0[28],
-        _o0[30], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[12], _o0[11], _o0[14], _o0[13], _o0[15],
-        _o0[16], _o0[19], _o0[18], _o0[20], _o0[22], _o0[21], _o0[24], _o0[23], _o0[25], b_y_apex, direction,
-        _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8], _o1[9], _o0[4], _o1[1], _o0[2],)
+    store(_a2, (_o0_32, _o0_31, _o0_34, _o0_33, _o0_35, _o1_56, _o1_57, _o1_53, _o1_54, _o1_55, _o1_62,
+        _o1_63, _o1_59, _o1_60, _o1_61, _o1_68, _o1_69, _o1_65, _o1_66, _o1_67, _o0_26, _o0_29, _o0_28,
+        _o0_30, _o1_20, _o1_21, _o1_17, _o1_18, _o1_19, _o0_12, _o0_11, _o0_14, _o0_13, _o0_15, _o0_16,
+        _o0_19, _o0_18, _o0_20, _o0_22, _o0_21, _o0_24, _o0_23, _o0_25, b_y_apex, direction, _o0_5, g_f,
+        ground, _o1_6, _o1_7, _o1_8, _o1_9, _o0_4, _o1_1, _o0_2,))
     _status = iterative_report_apex_return_jacobian_tail_c70fcc(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:cd017e56afa49b84
+#   support.py sha256:77264c626942dd40
 #   flight.py sha256:af2637d59c8ab493
-#   geyer_vs.py sha256:989b828600db2cf3
+#   geyer_vs.py sha256:c79a2adb8a06a196
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, row, stack
+from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer_vs import bottom_quartic
 from .slip_model import (cartesian_to_polar, max_step, polar_to_cartesian, stance_cartesian_rhs,
@@ -56,8 +56,7 @@ def apex_to_touchdown_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate) = (x[0], x[1], x[2], x[3], x[4],
-        x[5], x[6])
+    (b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4, 5, 6)
     # flight.apex_to_touchdown
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate)
     if _c0[6] != STATUS_OK:
@@ -72,8 +71,7 @@ def apex_to_touchdown_entry(x, p, out):
     if not (math.isfinite(touchdown_q_r) & math.isfinite(touchdown_q_rd) & math.isfinite(touchdown_q_th)
             & math.isfinite(touchdown_q_thd) & math.isfinite(t_flight) & math.isfinite(foot_x)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4], out[5],) = (touchdown_q_r, touchdown_q_rd, touchdown_q_th,
-        touchdown_q_thd, t_flight, foot_x,)
+    store(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,))
     return STATUS_OK
 
 
@@ -108,7 +106,7 @@ def liftoff_to_apex_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r, q_rd, q_th, q_thd, g_f, direction) = (x[0], x[1], x[2], x[3], x[4], x[5])
+    (q_r, q_rd, q_th, q_thd, g_f, direction,) = load(x, 0, 1, 2, 3, 4, 5)
     # flight.liftoff_to_apex
     _c0 = liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction)
     if _c0[5] != STATUS_OK:
@@ -122,7 +120,7 @@ def liftoff_to_apex_entry(x, p, out):
     if not (math.isfinite(apex_b_y) & math.isfinite(apex_b_xd) & math.isfinite(t_flight)
             & math.isfinite(dx_flight) & math.isfinite(apex_b_x)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3], out[4],) = (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,)
+    store(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,))
     return STATUS_OK
 
 
@@ -156,7 +154,7 @@ def stance_polar_rhs_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r, q_rd, q_th, q_thd, m, l0, k, g_s) = (x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7])
+    (q_r, q_rd, q_th, q_thd, m, l0, k, g_s,) = load(x, 0, 1, 2, 3, 4, 5, 6, 7)
     # slip_model.stance_polar_rhs
     _c0 = stance_polar_rhs(q_r, q_rd, q_th, q_thd, m, l0, k, g_s)
     d_q_r = _c0[0]
@@ -166,7 +164,7 @@ def stance_polar_rhs_entry(x, p, out):
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(d_q_r) & math.isfinite(d_q_rd) & math.isfinite(d_q_th) & math.isfinite(d_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (d_q_r, d_q_rd, d_q_th, d_q_thd,)
+    store(out, (d_q_r, d_q_rd, d_q_th, d_q_thd,))
     return STATUS_OK
 
 
@@ -200,7 +198,7 @@ def stance_cartesian_rhs_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (b_x, b_xd, b_y, b_yd, m, l0, k, g_s) = (x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7])
+    (b_x, b_xd, b_y, b_yd, m, l0, k, g_s,) = load(x, 0, 1, 2, 3, 4, 5, 6, 7)
     # slip_model.stance_cartesian_rhs
     _c0 = stance_cartesian_rhs(b_x, b_xd, b_y, b_yd, m, l0, k, g_s)
     d_b_x = _c0[0]
@@ -210,7 +208,7 @@ def stance_cartesian_rhs_entry(x, p, out):
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(d_b_x) & math.isfinite(d_b_xd) & math.isfinite(d_b_y) & math.isfinite(d_b_yd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (d_b_x, d_b_xd, d_b_y, d_b_yd,)
+    store(out, (d_b_x, d_b_xd, d_b_y, d_b_yd,))
     return STATUS_OK
 
 
@@ -241,14 +239,14 @@ def stance_energy_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r, q_rd, q_th, q_thd, m, l0, k, g_s) = (x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7])
+    (q_r, q_rd, q_th, q_thd, m, l0, k, g_s,) = load(x, 0, 1, 2, 3, 4, 5, 6, 7)
     # slip_model.stance_energy
     _c0 = stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s)
     energy = _c0
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(energy)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0],) = (energy,)
+    store(out, (energy,))
     return STATUS_OK
 
 
@@ -282,7 +280,7 @@ def polar_to_cartesian_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (q_r, q_rd, q_th, q_thd) = (x[0], x[1], x[2], x[3])
+    (q_r, q_rd, q_th, q_thd,) = load(x, 0, 1, 2, 3)
     # slip_model.polar_to_cartesian
     _c0 = polar_to_cartesian(q_r, q_rd, q_th, q_thd)
     out_b_x = _c0[0]
@@ -293,7 +291,7 @@ def polar_to_cartesian_entry(x, p, out):
     if not (math.isfinite(out_b_x) & math.isfinite(out_b_xd) & math.isfinite(out_b_y)
             & math.isfinite(out_b_yd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (out_b_x, out_b_xd, out_b_y, out_b_yd,)
+    store(out, (out_b_x, out_b_xd, out_b_y, out_b_yd,))
     return STATUS_OK
 
 
@@ -327,7 +325,7 @@ def cartesian_to_polar_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (b_x, b_xd, b_y, b_yd) = (x[0], x[1], x[2], x[3])
+    (b_x, b_xd, b_y, b_yd,) = load(x, 0, 1, 2, 3)
     # slip_model.cartesian_to_polar
     _c0 = cartesian_to_polar(b_x, b_xd, b_y, b_yd)
     out_q_r = _c0[0]
@@ -338,7 +336,7 @@ def cartesian_to_polar_entry(x, p, out):
     if not (math.isfinite(out_q_r) & math.isfinite(out_q_rd) & math.isfinite(out_q_th)
             & math.isfinite(out_q_thd)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0], out[1], out[2], out[3],) = (out_q_r, out_q_rd, out_q_th, out_q_thd,)
+    store(out, (out_q_r, out_q_rd, out_q_th, out_q_thd,))
     return STATUS_OK
 
 
@@ -367,14 +365,14 @@ def max_step_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (m, l0, k, g_s) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s,) = load(x, 0, 1, 2, 3)
     # slip_model.max_step
     _c0 = max_step(m, l0, k, g_s)
     step = _c0
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(step)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0],) = (step,)
+    store(out, (step,))
     return STATUS_OK
 
 
@@ -404,14 +402,14 @@ def stance_time_limit_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (m, l0, k_c, k_d, g_s) = (x[0], x[1], x[2], x[3], x[4])
+    (m, l0, k_c, k_d, g_s,) = load(x, 0, 1, 2, 3, 4)
     # slip_model.stance_time_limit
     _c0 = stance_time_limit(m, l0, k_c, k_d, g_s)
     t_max = _c0
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_max)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0],) = (t_max,)
+    store(out, (t_max,))
     return STATUS_OK
 
 
@@ -442,7 +440,7 @@ def bottom_quartic_entry(x, p, out):
             (returned).
     """
     # Total ops: 0
-    (p_b, E_ab, m, l0, k_c, g_s) = (x[0], x[1], x[2], x[3], x[4], x[5])
+    (p_b, E_ab, m, l0, k_c, g_s,) = load(x, 0, 1, 2, 3, 4, 5)
     # geyer_vs.bottom_quartic
     _c0 = bottom_quartic(p_b, E_ab, m, l0, k_c, g_s)
     if _c0[1] != STATUS_OK:
@@ -451,7 +449,7 @@ def bottom_quartic_entry(x, p, out):
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r_b)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    (out[0],) = (q_r_b,)
+    store(out, (q_r_b,))
     return STATUS_OK
 
 

@@ -425,6 +425,52 @@ def test_support_row_borrows_a_row_of_a_contiguous_or_strided_array():
         assert np.array_equal(A, want), A
 
 
+def test_support_load_and_store_are_subscripts_compiled_and_in_python():
+    """generated/support.py's ``load(a, i, ...)`` and ``store(a, values)``: what the kernels read
+    and write at constant positions. Compiled, on a contiguous or a strided row, they read and
+    write exactly the subscripts; in Python (a kernel's ``.py_func``) the same; ``load`` refuses
+    positions that are not constants (the lowering always writes literals)."""
+    from numba import njit
+    from numba.core.errors import TypingError
+    from slipmaps.generated import support
+
+    @njit
+    def swap_ends(a, b):
+        (first, third, last) = support.load(a, 0, 2, 5)
+        support.store(b, (last, third, first, 7))  # an integer stored as a float
+        return first + last
+
+    @njit
+    def at(a, i):
+        return support.load(a, i)
+
+    base = np.arange(12.0)
+    for a, b in ((base[:6].copy(), np.zeros(6)), (base[::2], np.zeros(12)[1::3])):
+        for run in (swap_ends, swap_ends.py_func):
+            out = b.copy()
+            assert run(a, out) == a[0] + a[5]
+            assert np.array_equal(out[:4], [a[5], a[2], a[0], 7.0]) and not out[4:].any(), out
+    with pytest.raises(TypingError):
+        at(base, 1)
+
+
+def test_support_node_arrays_are_disjoint_rows_of_the_stack():
+    """``node_arrays(stack(n * w), n, w)``: n arrays of w float64 each, one after the other on the
+    kernel's stack (a kernel's node arrays): writing one leaves the others as they were."""
+    from numba import njit
+    from slipmaps.generated import support
+
+    @njit
+    def fill():
+        (a, b, c) = support.node_arrays(support.stack(12), 3, 4)
+        for j in range(4):
+            a[j], b[j], c[j] = j, 10.0 + j, 20.0 + j
+        a[0] = -1.0
+        return a.shape[0], b[0], c[3], a[0] + a[1]
+
+    assert fill() == (4, 10.0, 23.0, 0.0)
+
+
 def test_batch_rows_of_strided_inputs_equal_contiguous_ones():
     """A role kernel's batch form borrows its rows (support.row) from whatever layout it is given:
     a Fortran-ordered ``X`` and a strided ``OUT`` give the rows of contiguous arrays."""
