@@ -163,6 +163,9 @@ class _Printer:
 
     def _Call(self, node):
         f = node.func
+        if isinstance(f, ast.Name) and f.id == "all_finite" and isinstance(node.args[0], ast.Tuple):
+            # support.all_finite((a, b, ...)): every entry finite
+            return f"({' && '.join(f'isfinite({self.expr(a)})' for a in node.args[0].elts)})"
         args = [self.expr(a) for a in node.args]
         if node.keywords:
             raise CPrintError(f"no C for keyword arguments in {ast.unparse(node)!r}")

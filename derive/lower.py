@@ -66,7 +66,7 @@ _GENERATED_NAME = re.compile(
 )
 _TEMPLATE_NAMES = frozenset(
     {"i", "out", "status", "math", "np", "njit", "carray", "NAN"}
-    | {"stack", "fail", "finite", "load", "store", "node_arrays"}
+    | {"stack", "fail", "finite", "load", "store", "node_arrays", "all_finite"}
 )
 
 #: The generated support module every kernel module imports (derive/templates/support.py.j2): stack
@@ -308,12 +308,12 @@ FINITE_CHAIN = 24
 
 
 def _finite_chain(codes: list[str], limit: int | None = FINITE_CHAIN) -> str | None:
-    """``math.isfinite(c0) & math.isfinite(c1) ...`` over the distinct codes that are not numbers,
-    or None when there are more than ``limit`` of them (None: no limit)."""
+    """``all_finite((c0, c1, ...))`` over the distinct codes that are not numbers (support.py: one
+    call), or None when there are more than ``limit`` of them (None: no limit)."""
     names = list(dict.fromkeys(c for c in codes if not re.fullmatch(r"-?[0-9.]+(e-?[0-9]+)?", c)))
     if limit is not None and len(names) > limit:
         return None
-    return " & ".join(f"math.isfinite({c})" for c in names) or "True"
+    return f"all_finite(({', '.join(names)},))" if names else "True"
 
 
 def _passes_p(ctx: _Ctx, call: Call) -> bool:
@@ -984,7 +984,8 @@ def lower(kernel: Kernel) -> dict:
     if kernel.check_inputs:
         if not kernel.status:
             raise LoweringError(f"kernel {kernel.name}: input checks need a status output")
-        conds = [f"math.isfinite({n})" for n in names if n not in kernel.unchecked]
+        checked = [n for n in names if n not in kernel.unchecked]
+        conds = [_finite_chain(checked, None)] if checked else []
         conds += [f"({to_code(a.domain)})" for a in kernel.args if a.domain is not None]
         for a in kernel.args:
             if a.domain is not None:
@@ -994,6 +995,7 @@ def lower(kernel: Kernel) -> dict:
         # (every operand a call or parenthesized: ``&`` binds tighter than a comparison)
         input_guard = " & ".join(conds)
         ctx.statuses.add("INVALID_INPUT")
+        ctx.uses_support = True  # support.all_finite
     body = _lower_steps(ctx, kernel.steps)
     forward = _load_outputs(body, _forward(body))
     if ctx.rows:
@@ -1019,6 +1021,7 @@ def lower(kernel: Kernel) -> dict:
         ctx.statuses.add("OK")
         if kernel.check_outputs:
             ctx.statuses.add("NUMERICAL_RANGE")
+            ctx.uses_support = True  # support.all_finite
     docs = [{"name": f.name, "doc": f.doc + (f" [{f.unit}]" if f.unit else "")} for f in outputs]
     if kernel.doc_returns:
         docs = [{"name": n, "doc": d} for n, d in kernel.doc_returns]

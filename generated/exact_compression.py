@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   exact_stance.py sha256:9fc8cdc675d93828
+#   support.py sha256:67f73baeb9937252
+#   exact_stance.py sha256:82a96fdb20198e89
 # ----------------------------------------------------------------------------------------------
 """Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->
 bottom."""
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .exact_stance import compression
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -63,12 +63,10 @@ def exact_compression(x, p, out):
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol) & ((q_r_td <= l0) and (q_r_td
-            > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s
-            > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol
-            >= 1e-16) and (atol <= 0.001))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol,)) & ((q_r_td
+            <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c
+            > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol
+            <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact half (exact_stance)
     _c0 = compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol)
@@ -80,8 +78,7 @@ def exact_compression(x, p, out):
     end_q_th = _c0[3]
     end_q_thd = _c0[4]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
-            & math.isfinite(end_q_thd)):
+    if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))
     return STATUS_OK

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   exact_stance.py sha256:9fc8cdc675d93828
-#   flight.py sha256:af2637d59c8ab493
+#   support.py sha256:67f73baeb9937252
+#   exact_stance.py sha256:82a96fdb20198e89
+#   flight.py sha256:c9589b860411ab61
 # ----------------------------------------------------------------------------------------------
 """Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom ->
 liftoff."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .exact_stance import decompression
 from .flight import liftoff_to_apex
 
@@ -65,12 +65,10 @@ def exact_decompression(x, p, out):
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
     (m, l0, k_d, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol) & ((q_r_b > 0.0))
-            & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16)
-            and (atol <= 0.001))):
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol,)) & ((q_r_b
+            > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s
+            > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol
+            >= 1e-16) and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact half (exact_stance)
     _c0 = decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol)
@@ -82,8 +80,7 @@ def exact_decompression(x, p, out):
     end_q_th = _c0[3]
     end_q_thd = _c0[4]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
-            & math.isfinite(end_q_thd)):
+    if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))
     return STATUS_OK
@@ -139,9 +136,7 @@ def exact_decompression_apex(x, p, out):
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
     (m, l0, k_d, g_s, q_r_lo, rtol, atol, g_f,) = load(p, 0, 1, 2, 3, 5, 6, 7, 4)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol) & math.isfinite(g_f) & ((q_r_b
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol, g_f,)) & ((q_r_b
             > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s
             > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol
             >= 1e-16) and (atol <= 0.001)) & ((g_f > 0.0))):
@@ -168,9 +163,8 @@ def exact_decompression_apex(x, p, out):
     apex_speed = _c1[1]
     t_ascent = _c1[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(_o0_0)
-            & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
-            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)):
+    if not (all_finite((apex_height, apex_speed, _o0_0, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+            liftoff_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, _o0_0, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,))

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   exact_stance.py sha256:9fc8cdc675d93828
-#   flight_jacobian.py sha256:6bf56f529a8d5e4e
+#   support.py sha256:67f73baeb9937252
+#   exact_stance.py sha256:82a96fdb20198e89
+#   flight_jacobian.py sha256:d83a0fc7783e9ae2
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .exact_stance import stance_jacobian
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd)
@@ -58,9 +58,7 @@ def exact_stance_jacobian(x, p, out):
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol)
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,))
             & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
             > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
             & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
@@ -128,14 +126,11 @@ def exact_apex_return_jacobian(x, p, out):
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9)
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
-            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(rtol) & math.isfinite(atol)
-            & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c
-            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16)
-            and (atol <= 0.001))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
+            q_r_td, q_r_lo, rtol, atol,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
+            > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td
+            <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol
+            <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))

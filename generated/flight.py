@@ -5,13 +5,17 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
+# Depends on (content hashes; a change here re-keys numba's cache of this file):
+#   support.py sha256:67f73baeb9937252
 # ----------------------------------------------------------------------------------------------
 """Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2)."""
 
 import math
 
 import numpy as np
-from numba import njit
+from numba import carray, njit
+
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -54,10 +58,8 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
     """
     # Total ops: 63
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(q_r_td) & math.isfinite(g_f) & math.isfinite(ground)
-            & math.isfinite(retraction_rate) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((q_r_td > 0.0)) & ((g_f > 0.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate,)) & ((b_y_apex
+            >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((q_r_td > 0.0)) & ((g_f > 0.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
     # the foot above the touchdown ground at the apex
@@ -134,8 +136,7 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retract
     t_flight = t_td
     foot_x = b_xd_apex*t_td + q_r_td*sin_td
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(touchdown_q_r) & math.isfinite(touchdown_q_rd) & math.isfinite(touchdown_q_th)
-            & math.isfinite(touchdown_q_thd) & math.isfinite(t_flight) & math.isfinite(foot_x)):
+    if not (all_finite((touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,))):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, STATUS_OK)
 
@@ -164,9 +165,8 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction):
     """
     # Total ops: 20
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
-            & math.isfinite(g_f) & math.isfinite(direction) & ((q_r > 0.0)) & ((g_f > 0.0)) & ((direction
-            == -1.0) or (direction == 0.0) or (direction == 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, g_f, direction,)) & ((q_r > 0.0)) & ((g_f > 0.0))
+            & ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -193,7 +193,6 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction):
     dx_flight = _x6
     apex_b_x = _x6 + b_x
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_b_y) & math.isfinite(apex_b_xd) & math.isfinite(t_flight)
-            & math.isfinite(dx_flight) & math.isfinite(apex_b_x)):
+    if not (all_finite((apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,))):
         return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, STATUS_OK)

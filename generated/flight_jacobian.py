@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
+#   support.py sha256:67f73baeb9937252
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -16,7 +16,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -230,10 +230,8 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate(b_y_
     """
     # Total ops: 95
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(q_r_td) & math.isfinite(g_f) & math.isfinite(ground)
-            & math.isfinite(retraction_rate) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((q_r_td > 0.0)) & ((g_f > 0.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, retraction_rate,)) & ((b_y_apex
+            >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((q_r_td > 0.0)) & ((g_f > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
     d_drop__q_th_td = q_r_td*math.sin(q_th_td)
@@ -360,9 +358,8 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, 
     """
     # Total ops: 50
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
-            & math.isfinite(g_f) & math.isfinite(direction) & ((q_r > 0.0)) & ((g_f > 0.0)) & ((direction
-            == -1.0) or (direction == 0.0) or (direction == 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, g_f, direction,)) & ((q_r > 0.0)) & ((g_f > 0.0))
+            & ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -452,9 +449,8 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     """
     # Total ops: 64
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
-            & math.isfinite(g_f) & math.isfinite(direction) & ((q_r > 0.0)) & ((g_f > 0.0)) & ((direction
-            == -1.0) or (direction == 0.0) or (direction == 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, g_f, direction,)) & ((q_r > 0.0)) & ((g_f > 0.0))
+            & ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
 kernels."""
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -212,10 +212,9 @@ def geyer_stance(x, p, out):
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k, g_s, q_r_lo,) = load(p, 0, 1, 2, 3, 6)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,)) & ((q_r_td <= l0)
+            and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0))
+            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
@@ -256,9 +255,8 @@ def geyer_stance(x, p, out):
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return fail(out, STATUS_FALL)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd) & math.isfinite(liftoff_q_r)
-            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)):
+    if not (all_finite((t_bottom, t_stance, bottom_q_r, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+            liftoff_q_th, liftoff_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd,))
@@ -307,11 +305,9 @@ def geyer_state_at(x, p, out):
     (t, q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3, 4)
     (m, l0, k, g_s, q_r_lo,) = load(p, 0, 1, 2, 3, 6)
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
-            & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0))
-            & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+    if not (all_finite((t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,)) & ((t >= 0.0))
+            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
@@ -331,7 +327,7 @@ def geyer_state_at(x, p, out):
     q_th = _c1[2]
     q_thd = _c1[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
+    if not (all_finite((q_r, q_rd, q_th, q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (q_r, q_rd, q_th, q_thd,))
     return STATUS_OK
@@ -397,12 +393,10 @@ def geyer_apex_return(x, p, out):
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
     (m, l0, k, g_s, g_f, q_r_td, q_r_lo,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k) & math.isfinite(g_s) & math.isfinite(g_f) & math.isfinite(q_r_td)
-            & math.isfinite(q_r_lo) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0))
-            & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k, g_s, g_f, q_r_td,
+            q_r_lo,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0))
+            & ((k > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo
+            <= l0) and (q_r_lo > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -437,11 +431,8 @@ def geyer_apex_return(x, p, out):
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
-            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
-            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th)):
+    if not (all_finite((apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd,
+            liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
-#   geyer.py sha256:c8ca09c74d94d05c
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
+#   geyer.py sha256:2e42452724d46d2a
 # ----------------------------------------------------------------------------------------------
 """Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
 apex-return kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -51,8 +51,7 @@ def bottom_quartic(p_b, E_ab, m, l0, k_c, g_s):
     """
     # Total ops: 64
     # inputs: finite and inside their domains
-    if not (math.isfinite(p_b) & math.isfinite(E_ab) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k_c) & math.isfinite(g_s) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s
+    if not (all_finite((p_b, E_ab, m, l0, k_c, g_s,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s
             > 0.0))):
         return _NAN1 + (STATUS_INVALID_INPUT,)
     # a start left of the root: V >= E there
@@ -95,7 +94,7 @@ def bottom_quartic(p_b, E_ab, m, l0, k_c, g_s):
     if not ((qb <= l0)):
         return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r_b)):
+    if not (all_finite((q_r_b,))):
         return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (q_r_b, STATUS_OK)
 
@@ -159,15 +158,13 @@ def geyer_vs_stance(x, p, out):
     (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 7, 8, 9,
         10, 11))
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(continuity) & math.isfinite(gravity)
-            & math.isfinite(iterations) & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0))
-            & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0))
-            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((continuity == 0.0) or (continuity
-            == 1.0) or (continuity == 2.0)) & ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
-            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
-            & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity,
+            iterations, tol,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
+            > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0))
+            & ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
@@ -341,11 +338,8 @@ def geyer_vs_stance(x, p, out):
     liftoff_q_th = i_liftoff_q_th
     liftoff_q_thd = i_liftoff_q_thd
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
-            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
-            & math.isfinite(liftoff_q_thd) & math.isfinite(P_c_compression) & math.isfinite(P_c_decompression)
-            & math.isfinite(passes)):
+    if not (all_finite((t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+            liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
         liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,))
@@ -407,15 +401,13 @@ def geyer_vs_state_at(x, p, out):
     (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 7, 8, 9,
         10, 11))
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
-            & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c)
-            & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(continuity)
-            & math.isfinite(gravity) & math.isfinite(iterations) & math.isfinite(tol) & ((t >= 0.0))
-            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            & ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) & ((gravity == 0.0)
-            or (gravity == 1.0) or (gravity == 2.0)) & ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+            gravity, iterations, tol,)) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((continuity == 0.0) or (continuity == 1.0) or (continuity
+            == 2.0)) & ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
@@ -614,7 +606,7 @@ def geyer_vs_state_at(x, p, out):
     q_thd = ((_x53*(P_c_compression*t/i_t_bottom + p_td)/c_q_r**2) if _x44
         else (_x53*(P_c_decompression*_x45/(-i_t_bottom + i_t_stance) + i_p_b)/(_x47**2*l0**2)))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
+    if not (all_finite((q_r, q_rd, q_th, q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (q_r, q_rd, q_th, q_thd,))
     return STATUS_OK
@@ -695,17 +687,13 @@ def geyer_vs_apex_return(x, p, out):
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3,
         4, 5, 6, 7, 8, 9, 10, 11))
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
-            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(continuity)
-            & math.isfinite(gravity) & math.isfinite(iterations) & math.isfinite(tol) & ((b_y_apex >= 0.0))
-            & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0))
-            & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0))
-            & ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
+            q_r_td, q_r_lo, continuity, gravity, iterations, tol,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) & ((gravity == 0.0)
+            or (gravity == 1.0) or (gravity == 2.0)) & ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -741,12 +729,9 @@ def geyer_vs_apex_return(x, p, out):
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
-            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
-            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th) & math.isfinite(_o1_10) & math.isfinite(_o1_11)
-            & math.isfinite(_o1_12)):
+    if not (all_finite((apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd,
+            liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10, _o1_11, _o1_12,
+            ))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10, _o1_11, _o1_12,))

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
-#   geyer.py sha256:c8ca09c74d94d05c
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
+#   geyer.py sha256:2e42452724d46d2a
 # ----------------------------------------------------------------------------------------------
 """Gravity corrections types 0-4 (report sections 4.1-4.5): the stance, state-at-time and apex-return kernels
 of the maps gravity-type0, gravity-type1, gravity-type2, gravity-type3, gravity-type4 (one body,
@@ -19,7 +19,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -81,7 +81,7 @@ def gravity_impulse_type0(_a):
     else:
         return _NAN1 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(i_P_new)):
+    if not (all_finite((i_P_new,))):
         return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (i_P_new, STATUS_OK)
 
@@ -103,16 +103,14 @@ def gravity_stance_shared(x, p, out, gravity_impulse):
     (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, iterations, tol,) = (load(p, 0, 1, 2, 3,
         6, 7, 8, 9, 10, 11, 12))
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
-            & math.isfinite(interval) & math.isfinite(leg_length) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            & ((reading == 0.0) or (reading == 1.0)) & ((samples == math.floor(samples)) and (samples >= 2.0)
-            and (samples <= 3.0)) & ((interval == 0.0) or (interval == 1.0)) & ((leg_length == 0.0)
-            or (leg_length == 1.0) or (leg_length == 2.0)) & ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, interval,
+            leg_length, iterations, tol,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0)) & ((samples == math.floor(samples))
+            and (samples >= 2.0) and (samples <= 3.0)) & ((interval == 0.0) or (interval == 1.0))
+            & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -228,10 +226,8 @@ def gravity_stance_shared(x, p, out, gravity_impulse):
     else:
         return fail(out, STATUS_INVALID_INPUT)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd) & math.isfinite(liftoff_q_r)
-            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
-            & math.isfinite(P_c) & math.isfinite(passes)):
+    if not (all_finite((t_bottom, t_stance, bottom_q_r, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+            liftoff_q_th, liftoff_q_thd, P_c, passes,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, P_c, passes,))
@@ -320,17 +316,14 @@ def gravity_state_at_shared(x, p, out, gravity_impulse):
     (m, l0, k, g_s, q_r_lo, reading, samples, interval, leg_length, iterations, tol,) = (load(p, 0, 1, 2, 3,
         6, 7, 8, 9, 10, 11, 12))
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) & math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td)
-            & math.isfinite(q_thd_td) & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
-            & math.isfinite(interval) & math.isfinite(leg_length) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
-            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0)) & ((samples == math.floor(samples))
-            and (samples >= 2.0) and (samples <= 3.0)) & ((interval == 0.0) or (interval == 1.0))
-            & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (all_finite((t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples,
+            interval, leg_length, iterations, tol,)) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0))
+            & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0)) & ((samples
+            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) & ((interval == 0.0)
+            or (interval == 1.0)) & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
+            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -427,7 +420,7 @@ def gravity_state_at_shared(x, p, out, gravity_impulse):
     # the momentum at t
     q_thd = (P_c*(-ramp + 1.0 + ramp*t/i_t_stance) + p_td)/(m*q_r**2)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)):
+    if not (all_finite((q_r, q_rd, q_th, q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (q_r, q_rd, q_th, q_thd,))
     return STATUS_OK
@@ -505,18 +498,14 @@ def gravity_apex_return_shared(x, p, out, gravity_stance):
     (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, interval, leg_length, iterations, tol,) = (load(p,
         0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k) & math.isfinite(g_s) & math.isfinite(g_f) & math.isfinite(q_r_td)
-            & math.isfinite(q_r_lo) & math.isfinite(reading) & math.isfinite(samples)
-            & math.isfinite(interval) & math.isfinite(leg_length) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((reading == 0.0) or (reading == 1.0)) & ((samples
-            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) & ((interval == 0.0)
-            or (interval == 1.0)) & ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
-            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
-            & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k, g_s, g_f, q_r_td,
+            q_r_lo, reading, samples, interval, leg_length, iterations, tol,)) & ((b_y_apex >= 0.0))
+            & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k > 0.0)) & ((g_s > 0.0))
+            & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((reading == 0.0) or (reading == 1.0)) & ((samples == math.floor(samples)) and (samples >= 2.0)
+            and (samples <= 3.0)) & ((interval == 0.0) or (interval == 1.0)) & ((leg_length == 0.0)
+            or (leg_length == 1.0) or (leg_length == 2.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -552,11 +541,8 @@ def gravity_apex_return_shared(x, p, out, gravity_stance):
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
-            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
-            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th) & math.isfinite(_o1_10) & math.isfinite(_o1_11)):
+    if not (all_finite((apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd,
+            liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10, _o1_11,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10, _o1_11,))
@@ -660,7 +646,7 @@ def gravity_impulse_type1(_a):
     else:
         return _NAN1 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(i_P_new)):
+    if not (all_finite((i_P_new,))):
         return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (i_P_new, STATUS_OK)
 
@@ -775,7 +761,7 @@ def gravity_impulse_type2(_a):
     else:
         return _NAN1 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(i_P_new)):
+    if not (all_finite((i_P_new,))):
         return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (i_P_new, STATUS_OK)
 
@@ -870,7 +856,7 @@ def gravity_impulse_type3(_a):
     else:
         return _NAN1 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(i_P_new)):
+    if not (all_finite((i_P_new,))):
         return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (i_P_new, STATUS_OK)
 
@@ -1042,7 +1028,7 @@ def gravity_impulse_type4(_a):
     else:
         return _NAN1 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(i_P_new)):
+    if not (all_finite((i_P_new,))):
         return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (i_P_new, STATUS_OK)
 

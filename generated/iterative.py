@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
-#   geyer.py sha256:c8ca09c74d94d05c
-#   geyer_vs.py sha256:c79a2adb8a06a196
-#   gravity.py sha256:7fa3908e51a0d2d9
-#   gravity_type5.py sha256:7edf55e403f7d7f8
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
+#   geyer.py sha256:2e42452724d46d2a
+#   geyer_vs.py sha256:bcd32398b0eff597
+#   gravity.py sha256:8defb58365cb2466
+#   gravity_type5.py sha256:4381cd79a8f70730
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -21,7 +21,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
 from .geyer_vs import geyer_vs_stance
@@ -193,13 +193,11 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     """
     # Total ops: 59
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
-            & math.isfinite(guess_q_r) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
-            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, nodes,
+            iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0)
+            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
     (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, G, Q_next, P_next,) = node_arrays(stack(156), 13, 12)
@@ -351,8 +349,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     if not ((end_q_r > 0.0)):
         return _NAN6 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_th)
-            & math.isfinite(end_q_thd) & math.isfinite(passes)):
+    if not (all_finite((t_half, end_q_r, end_q_th, end_q_thd, passes,))):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, 0.0, end_q_th, end_q_thd, passes, STATUS_OK)
 
@@ -394,14 +391,11 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     """
     # Total ops: 51
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
-            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
-            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd, nodes,
+            iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
+            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
     (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, Q_next, P_next,) = node_arrays(stack(144), 12, 12)
@@ -543,8 +537,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     end_q_thd = (_p_end + m*q_r**2*q_thd)/(m*q_r_lo**2)
     passes = _passes
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
-            & math.isfinite(end_q_thd) & math.isfinite(passes)):
+    if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes,))):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
@@ -669,10 +662,8 @@ def iterative_core(_a):
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return _NAN11 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
-            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
-            & math.isfinite(liftoff_q_thd) & math.isfinite(passes)):
+    if not (all_finite((t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+            liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes,))):
         return _NAN11 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
@@ -870,14 +861,12 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
-            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations,
+            tol,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0))
+            & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
+            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -910,10 +899,8 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
-            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
-            & math.isfinite(liftoff_q_thd) & math.isfinite(passes)):
+    if not (all_finite((t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+            liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
         liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes,))
@@ -1001,15 +988,13 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8,
         9, 10))
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
-            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0)
-            and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
-            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
+            q_r_td, q_r_lo, nodes, iterations, tol,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0))
+            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
+            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1044,11 +1029,8 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
-            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
-            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th) & math.isfinite(_o1_10)):
+    if not (all_finite((apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd,
+            liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, _o1_10,))

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   iterative.py sha256:f663371f278af016
+#   support.py sha256:67f73baeb9937252
+#   iterative.py sha256:4eec1aaeafb85a8f
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .iterative import (schwind_compression, zeroth_geyer, zeroth_geyer_vs, zeroth_gravity_type0,
     zeroth_gravity_type1, zeroth_gravity_type2, zeroth_gravity_type3, zeroth_gravity_type4,
     zeroth_gravity_type5, zeroth_held)
@@ -46,13 +46,11 @@ def iterative_compression_zeroth_shared(x, p, out, zeroth):
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, g_s, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
-            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((q_r_td <= l0)
-            and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c
-            > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
-            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,))
+            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # zeroth iterate (option zeroth)
     _c0 = zeroth(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td)
@@ -75,8 +73,7 @@ def iterative_compression_zeroth_shared(x, p, out, zeroth):
     end_q_thd = _c1[4]
     passes = _c1[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
-            & math.isfinite(end_q_thd) & math.isfinite(passes)):
+    if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes,))
     return STATUS_OK

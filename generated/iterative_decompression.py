@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
-#   iterative.py sha256:f663371f278af016
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
+#   iterative.py sha256:4eec1aaeafb85a8f
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import liftoff_to_apex
 from .iterative import schwind_decompression
 
@@ -70,9 +70,7 @@ def iterative_decompression(x, p, out):
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
     (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol)
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol,))
             & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0))
             & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
             or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
@@ -90,8 +88,7 @@ def iterative_decompression(x, p, out):
     end_q_thd = _c0[4]
     passes = _c0[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
-            & math.isfinite(end_q_thd) & math.isfinite(passes)):
+    if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes,))
     return STATUS_OK
@@ -151,14 +148,12 @@ def iterative_decompression_apex(x, p, out):
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
     (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol, g_f,) = load(p, 0, 1, 2, 3, 5, 6, 7, 8, 4)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol)
-            & math.isfinite(g_f) & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
-            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
-            and (tol <= 1.0)) & ((g_f > 0.0))):
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol, g_f,
+            )) & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d
+            > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
+            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0)) & ((g_f
+            > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the half: Iterative decompression half (bottom to liftoff, k_d; converging form)
     _x0 = carray(stack(4), 4)
@@ -182,9 +177,8 @@ def iterative_decompression_apex(x, p, out):
     apex_speed = _c1[1]
     t_ascent = _c1[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(_o0_0)
-            & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
-            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)):
+    if not (all_finite((apex_height, apex_speed, _o0_0, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+            liftoff_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, _o0_0, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,))

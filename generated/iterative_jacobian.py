@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight_jacobian.py sha256:6bf56f529a8d5e4e
-#   geyer_jacobian.py sha256:ab2f6e1811549f00
-#   geyer_vs_jacobian.py sha256:3759677b611899d7
-#   gravity_jacobian.py sha256:59c5051b0d9bdefb
-#   gravity_type5_jacobian.py sha256:4e4ebb967ae97305
+#   support.py sha256:67f73baeb9937252
+#   flight_jacobian.py sha256:d83a0fc7783e9ae2
+#   geyer_jacobian.py sha256:0d4745d900cee34c
+#   geyer_vs_jacobian.py sha256:7141f9e587a8ed6c
+#   gravity_jacobian.py sha256:36c4e48ce2ebf4c1
+#   gravity_type5_jacobian.py sha256:aa1934e6e4ddc204
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -21,7 +21,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian
@@ -479,13 +479,11 @@ def schwind_compression_jvp6_4eaacb(_a, out):
         ) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23,
         24, 25, 26, 27, 28, 29, 30, 31))
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(g_s)
-            & math.isfinite(guess_q_r) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
-            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, nodes,
+            iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0)
+            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
     (Q0, P0, d_Q0__0, d_Q0__1, d_Q0__2, d_Q0__3, d_Q0__4, d_Q0__5, d_P0__0, d_P0__1, d_P0__2, d_P0__3,
@@ -1034,14 +1032,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
     """
     # Total ops: 282
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) & math.isfinite(q_rd) & math.isfinite(q_th) & math.isfinite(q_thd)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(guess_q_th) & math.isfinite(guess_q_thd)
-            & math.isfinite(nodes) & math.isfinite(iterations) & math.isfinite(tol) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
-            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd, nodes,
+            iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
+            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
     (Q0, P0, d_Q0__q_th, d_Q0__guess_q_th, d_P0__q_r, d_P0__q_thd, d_P0__guess_q_thd, d_Q0__q_r, d_Q0__q_thd,
@@ -1739,14 +1734,12 @@ def iterative_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac, constant0):
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
-            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations,
+            tol,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0))
+            & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
+            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2018,11 +2011,8 @@ def iterative_apex_return_jacobian_tail_42d188(_a, out):
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by the role kernels that return them)
-    if not (math.isfinite(_o0_0) & math.isfinite(_o0_1) & math.isfinite(t_descent) & math.isfinite(t_stance)
-            & math.isfinite(_o0_2) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
-            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd) & math.isfinite(step_length)
-            & math.isfinite(foot_x) & math.isfinite(foot_y) & math.isfinite(touchdown_q_th)
-            & math.isfinite(passes)):
+    if not (all_finite((_o0_0, _o0_1, t_descent, t_stance, _o0_2, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+            liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, passes,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (_o0_0, _o0_1, t_descent, t_stance, _o0_2, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, passes, d_apex_height__b_y_apex,
@@ -2068,15 +2058,13 @@ def iterative_apex_return_jacobian_zeroth_shared(x, p, out, iterative_stance_jac
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8,
         9, 10))
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
-            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(nodes) & math.isfinite(iterations)
-            & math.isfinite(tol) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0)
-            and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
-            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
+            q_r_td, q_r_lo, nodes, iterations, tol,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0))
+            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
+            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))

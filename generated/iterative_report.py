@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
-#   geyer_vs.py sha256:c79a2adb8a06a196
-#   iterative.py sha256:f663371f278af016
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
+#   geyer_vs.py sha256:bcd32398b0eff597
+#   iterative.py sha256:4eec1aaeafb85a8f
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -19,7 +19,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer_vs import bottom_quartic
 from .iterative import (zeroth_geyer, zeroth_geyer_vs, zeroth_gravity_type0, zeroth_gravity_type1,
@@ -170,8 +170,7 @@ def report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_
     bottom_q_th = c_Q
     bottom_q_thd = c_P/(bottom_q_r**2*m)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(bottom_q_r) & math.isfinite(bottom_q_th)
-            & math.isfinite(bottom_q_thd) & math.isfinite(E_ab)):
+    if not (all_finite((t_bottom, bottom_q_r, bottom_q_th, bottom_q_thd, E_ab,))):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, E_ab, STATUS_OK)
 
@@ -331,10 +330,8 @@ def report_core(_a):
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return _NAN10 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
-            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
-            & math.isfinite(liftoff_q_thd)):
+    if not (all_finite((t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+            liftoff_q_rd, liftoff_q_th, liftoff_q_thd,))):
         return _NAN10 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
         liftoff_q_th, liftoff_q_thd, STATUS_OK)
@@ -359,12 +356,10 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth, constant0):
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations)
-            & math.isfinite(bottom_length) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
-            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations,
+            bottom_length,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
+            > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
             == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
             == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
@@ -398,10 +393,8 @@ def iterative_report_stance_zeroth_shared(x, p, out, zeroth, constant0):
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) & math.isfinite(t_stance) & math.isfinite(bottom_q_r)
-            & math.isfinite(bottom_q_rd) & math.isfinite(bottom_q_th) & math.isfinite(bottom_q_thd)
-            & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th)
-            & math.isfinite(liftoff_q_thd)):
+    if not (all_finite((t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+            liftoff_q_rd, liftoff_q_th, liftoff_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
         liftoff_q_rd, liftoff_q_th, liftoff_q_thd,))
@@ -491,11 +484,8 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length,) = (load(p, 0, 1, 2, 3, 4,
         5, 6, 7, 8, 9, 10))
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
-            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(variant)
-            & math.isfinite(iterations) & math.isfinite(bottom_length) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
+            q_r_td, q_r_lo, variant, iterations, bottom_length,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
             < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
             & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
             & ((variant == 0.0) or (variant == 1.0)) & ((iterations == math.floor(iterations)) and (iterations
@@ -534,11 +524,8 @@ def iterative_report_apex_return_zeroth_shared(x, p, out, iterative_report_stanc
     foot_y = -b_y_apex + ground
     touchdown_q_th = td_q_th
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(t_descent)
-            & math.isfinite(_o1_1) & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r)
-            & math.isfinite(liftoff_q_rd) & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)
-            & math.isfinite(step_length) & math.isfinite(foot_x) & math.isfinite(foot_y)
-            & math.isfinite(touchdown_q_th)):
+    if not (all_finite((apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd,
+            liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, t_descent, _o1_1, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom ->
 liftoff."""
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -65,12 +65,10 @@ def iterative_report_decompression(x, p, out):
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
     (m, l0, k_d, g_s, q_r_lo, variant, iterations,) = load(p, 0, 1, 2, 3, 4, 5, 6)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations) & ((q_r_b > 0.0))
-            & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))):
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant, iterations,))
+            & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0))
+            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0))
+            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # E_ba (137)
     _x0 = (0.5)*k_d
@@ -169,8 +167,7 @@ def iterative_report_decompression(x, p, out):
     end_q_th = liftoff_q_th
     end_q_thd = liftoff_q_thd
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) & math.isfinite(end_q_r) & math.isfinite(end_q_rd) & math.isfinite(end_q_th)
-            & math.isfinite(end_q_thd)):
+    if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,))
     return STATUS_OK
@@ -227,9 +224,7 @@ def iterative_report_decompression_apex(x, p, out):
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
     (m, l0, k_d, g_s, q_r_lo, variant, iterations, g_f,) = load(p, 0, 1, 2, 3, 5, 6, 7, 4)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) & math.isfinite(q_rd_b) & math.isfinite(q_th_b) & math.isfinite(q_thd_b)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_d) & math.isfinite(g_s)
-            & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations) & math.isfinite(g_f)
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant, iterations, g_f,))
             & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0))
             & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0))
             & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
@@ -257,9 +252,8 @@ def iterative_report_decompression_apex(x, p, out):
     apex_speed = _c1[1]
     t_ascent = _c1[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) & math.isfinite(apex_speed) & math.isfinite(_o0_0)
-            & math.isfinite(t_ascent) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
-            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd)):
+    if not (all_finite((apex_height, apex_speed, _o0_0, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+            liftoff_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_height, apex_speed, _o0_0, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd,))

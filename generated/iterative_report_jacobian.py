@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight_jacobian.py sha256:6bf56f529a8d5e4e
-#   geyer_vs_jacobian.py sha256:3759677b611899d7
-#   iterative_jacobian.py sha256:a24ba462d5f6574a
+#   support.py sha256:67f73baeb9937252
+#   flight_jacobian.py sha256:d83a0fc7783e9ae2
+#   geyer_vs_jacobian.py sha256:7141f9e587a8ed6c
+#   iterative_jacobian.py sha256:9e85501ffe876ae4
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -19,7 +19,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground_retraction_rate,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_vs_jacobian import bottom_quartic_jac_p_b_E_ab_k_c
@@ -924,12 +924,10 @@ def iterative_report_stance_jacobian_zeroth_shared(x, p, out, zeroth_jac, consta
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) & math.isfinite(q_rd_td) & math.isfinite(q_th_td) & math.isfinite(q_thd_td)
-            & math.isfinite(m) & math.isfinite(l0) & math.isfinite(k_c) & math.isfinite(k_d)
-            & math.isfinite(g_s) & math.isfinite(q_r_lo) & math.isfinite(variant) & math.isfinite(iterations)
-            & math.isfinite(bottom_length) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
-            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
-            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations,
+            bottom_length,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
+            > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((variant == 0.0) or (variant == 1.0)) & ((iterations
             == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((bottom_length
             == 0.0) or (bottom_length == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
@@ -1208,10 +1206,8 @@ def iterative_report_apex_return_jacobian_tail_c70fcc(_a, out):
     d_touchdown_q_th__retraction_rate = _j_td_q_th__retraction_rate
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by the role kernels that return them)
-    if not (math.isfinite(_o0_0) & math.isfinite(_o0_1) & math.isfinite(t_descent) & math.isfinite(t_stance)
-            & math.isfinite(_o0_2) & math.isfinite(liftoff_q_r) & math.isfinite(liftoff_q_rd)
-            & math.isfinite(liftoff_q_th) & math.isfinite(liftoff_q_thd) & math.isfinite(step_length)
-            & math.isfinite(foot_x) & math.isfinite(foot_y) & math.isfinite(touchdown_q_th)):
+    if not (all_finite((_o0_0, _o0_1, t_descent, t_stance, _o0_2, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+            liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (_o0_0, _o0_1, t_descent, t_stance, _o0_2, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, touchdown_q_th, d_apex_height__b_y_apex,
@@ -1258,11 +1254,8 @@ def iterative_report_apex_return_jacobian_zeroth_shared(x, p, out, iterative_rep
     (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length,) = (load(p, 0, 1, 2, 3, 4,
         5, 6, 7, 8, 9, 10))
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) & math.isfinite(b_xd_apex) & math.isfinite(q_th_td)
-            & math.isfinite(ground) & math.isfinite(retraction_rate) & math.isfinite(m) & math.isfinite(l0)
-            & math.isfinite(k_c) & math.isfinite(k_d) & math.isfinite(g_s) & math.isfinite(g_f)
-            & math.isfinite(q_r_td) & math.isfinite(q_r_lo) & math.isfinite(variant)
-            & math.isfinite(iterations) & math.isfinite(bottom_length) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
+            q_r_td, q_r_lo, variant, iterations, bottom_length,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
             < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
             & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
             & ((variant == 0.0) or (variant == 1.0)) & ((iterations == math.floor(iterations)) and (iterations

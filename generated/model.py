@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:77264c626942dd40
-#   flight.py sha256:af2637d59c8ab493
-#   geyer_vs.py sha256:c79a2adb8a06a196
+#   support.py sha256:67f73baeb9937252
+#   flight.py sha256:c9589b860411ab61
+#   geyer_vs.py sha256:bcd32398b0eff597
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, into_rows, load, node_arrays, row, stack, store
+from .support import all_finite, fail, finite, into_rows, load, node_arrays, row, stack, store
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer_vs import bottom_quartic
 from .slip_model import (cartesian_to_polar, max_step, polar_to_cartesian, stance_cartesian_rhs,
@@ -68,8 +68,7 @@ def apex_to_touchdown_entry(x, p, out):
     t_flight = _c0[4]
     foot_x = _c0[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(touchdown_q_r) & math.isfinite(touchdown_q_rd) & math.isfinite(touchdown_q_th)
-            & math.isfinite(touchdown_q_thd) & math.isfinite(t_flight) & math.isfinite(foot_x)):
+    if not (all_finite((touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,))
     return STATUS_OK
@@ -117,8 +116,7 @@ def liftoff_to_apex_entry(x, p, out):
     dx_flight = _c0[3]
     apex_b_x = _c0[4]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_b_y) & math.isfinite(apex_b_xd) & math.isfinite(t_flight)
-            & math.isfinite(dx_flight) & math.isfinite(apex_b_x)):
+    if not (all_finite((apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,))
     return STATUS_OK
@@ -162,7 +160,7 @@ def stance_polar_rhs_entry(x, p, out):
     d_q_th = _c0[2]
     d_q_thd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(d_q_r) & math.isfinite(d_q_rd) & math.isfinite(d_q_th) & math.isfinite(d_q_thd)):
+    if not (all_finite((d_q_r, d_q_rd, d_q_th, d_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (d_q_r, d_q_rd, d_q_th, d_q_thd,))
     return STATUS_OK
@@ -206,7 +204,7 @@ def stance_cartesian_rhs_entry(x, p, out):
     d_b_y = _c0[2]
     d_b_yd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(d_b_x) & math.isfinite(d_b_xd) & math.isfinite(d_b_y) & math.isfinite(d_b_yd)):
+    if not (all_finite((d_b_x, d_b_xd, d_b_y, d_b_yd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (d_b_x, d_b_xd, d_b_y, d_b_yd,))
     return STATUS_OK
@@ -244,7 +242,7 @@ def stance_energy_entry(x, p, out):
     _c0 = stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s)
     energy = _c0
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(energy)):
+    if not (all_finite((energy,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (energy,))
     return STATUS_OK
@@ -288,8 +286,7 @@ def polar_to_cartesian_entry(x, p, out):
     out_b_y = _c0[2]
     out_b_yd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(out_b_x) & math.isfinite(out_b_xd) & math.isfinite(out_b_y)
-            & math.isfinite(out_b_yd)):
+    if not (all_finite((out_b_x, out_b_xd, out_b_y, out_b_yd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (out_b_x, out_b_xd, out_b_y, out_b_yd,))
     return STATUS_OK
@@ -333,8 +330,7 @@ def cartesian_to_polar_entry(x, p, out):
     out_q_th = _c0[2]
     out_q_thd = _c0[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(out_q_r) & math.isfinite(out_q_rd) & math.isfinite(out_q_th)
-            & math.isfinite(out_q_thd)):
+    if not (all_finite((out_q_r, out_q_rd, out_q_th, out_q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (out_q_r, out_q_rd, out_q_th, out_q_thd,))
     return STATUS_OK
@@ -370,7 +366,7 @@ def max_step_entry(x, p, out):
     _c0 = max_step(m, l0, k, g_s)
     step = _c0
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(step)):
+    if not (all_finite((step,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (step,))
     return STATUS_OK
@@ -407,7 +403,7 @@ def stance_time_limit_entry(x, p, out):
     _c0 = stance_time_limit(m, l0, k_c, k_d, g_s)
     t_max = _c0
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_max)):
+    if not (all_finite((t_max,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (t_max,))
     return STATUS_OK
@@ -447,7 +443,7 @@ def bottom_quartic_entry(x, p, out):
         return fail(out, _c0[1])
     q_r_b = _c0[0]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r_b)):
+    if not (all_finite((q_r_b,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
     store(out, (q_r_b,))
     return STATUS_OK

@@ -87,6 +87,33 @@ def node_arrays(typingctx, ptr, n, width):
     return tupty(ptr, n, width), codegen
 
 
+def all_finite(values):
+    """Whether every entry of the tuple ``values`` is finite: a kernel's check of its inputs or
+    outputs, one call (``math.isfinite(a) & math.isfinite(b) ...`` is a call and an operator per
+    entry, each typed and lowered on its own). Plain Python here (a kernel's ``.py_func``)."""
+    return all(math.isfinite(v) for v in values)
+
+
+@type_callable(all_finite)
+def _all_finite_type(context):
+    def typer(values):
+        if isinstance(values, types.BaseTuple) and all(isinstance(t, (types.Float,
+                types.Integer)) for t in values):
+            return types.boolean
+        return None
+
+    return typer
+
+
+@lower_builtin(all_finite, types.BaseTuple)
+def _all_finite_code(context, builder, signature, args):
+    result = cgutils.true_bit
+    for j, ty in enumerate(signature.args[0]):
+        isfinite = context.get_function(math.isfinite, types.boolean(ty))
+        result = builder.and_(result, isfinite(builder, [builder.extract_value(args[0], j)]))
+    return result
+
+
 def store(a, values):
     """``a[j] = values[j]`` for every entry of the tuple ``values`` (``a`` a 1-D float array at
     least that long; not checked in compiled code: the lowering sizes the arrays it stores into).
