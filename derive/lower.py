@@ -842,22 +842,12 @@ def _strings(node, skip) -> list[str]:
 _OUT_READ = re.compile(r"\b(_o\d+)\[(\d+)\]")
 
 
-def _texts(node):
-    """Every string in a lowered node tree (setups and binds included)."""
-    if isinstance(node, str):
-        yield node
-    elif isinstance(node, (list, dict)):
-        for v in node.values() if isinstance(node, dict) else node:
-            yield from _texts(v)
-
-
-def _dicts(node):
-    """Every node (dict) of a lowered node tree, at any depth, in order."""
-    if isinstance(node, dict):
-        yield node
+def _walk(node):
+    """Every value of a lowered node tree (its dicts, lists and strings), at any depth, in order."""
+    yield node
     if isinstance(node, (list, dict)):
         for v in node.values() if isinstance(node, dict) else node:
-            yield from _dicts(v)
+            yield from _walk(v)
 
 
 def _rewrite(node, sub):
@@ -877,12 +867,12 @@ def _load_outputs(body: list[dict], forward: dict[str, str]) -> dict[str, str]:
     binds' own names where they have one): numba lowers a subscript as a call of its own. Rewrites
     ``body`` in place; returns ``forward`` with its reads renamed."""
     reads: dict[str, set[int]] = {}
-    for t in [*_texts(body), *forward.values()]:
+    for t in [*(v for v in _walk(body) if isinstance(v, str)), *forward.values()]:
         for m in _OUT_READ.finditer(t):
             reads.setdefault(m.group(1), set()).add(int(m.group(2)))
     name: dict[str, str] = {}
-    for n in _dicts(body):
-        o = n.get("out") if n.get("kind") == "call" else None
+    for n in _walk(body):
+        o = n.get("out") if isinstance(n, dict) and n.get("kind") == "call" else None
         if o not in reads:
             continue
         for b in n["binds"]:
