@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:67f73baeb9937252
-#   exact_stance.py sha256:82a96fdb20198e89
-#   flight.py sha256:c9589b860411ab61
+#   support.py sha256:16c338d55e9ba950
+#   exact_stance.py sha256:c724dd16b5ee0012
+#   flight.py sha256:e14255f555263a7a
 # ----------------------------------------------------------------------------------------------
 """Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return
 kernels."""

@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:67f73baeb9937252
-#   flight.py sha256:c9589b860411ab61
-#   geyer.py sha256:2e42452724d46d2a
-#   geyer_vs.py sha256:bcd32398b0eff597
-#   gravity.py sha256:8defb58365cb2466
-#   gravity_type5.py sha256:4381cd79a8f70730
+#   support.py sha256:16c338d55e9ba950
+#   flight.py sha256:e14255f555263a7a
+#   geyer.py sha256:df8c90c66324efa8
+#   geyer_vs.py sha256:75f68619c7883648
+#   gravity.py sha256:a4ee793714d55977
+#   gravity_type5.py sha256:d1e2cf469b8e7186
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:67f73baeb9937252
-#   flight.py sha256:c9589b860411ab61
-#   iterative.py sha256:4eec1aaeafb85a8f
+#   support.py sha256:16c338d55e9ba950
+#   flight.py sha256:e14255f555263a7a
+#   iterative.py sha256:64eb07f04d45dbba
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:67f73baeb9937252
-#   flight_jacobian.py sha256:d83a0fc7783e9ae2
-#   geyer_jacobian.py sha256:0d4745d900cee34c
-#   geyer_vs_jacobian.py sha256:7141f9e587a8ed6c
-#   gravity_jacobian.py sha256:36c4e48ce2ebf4c1
-#   gravity_type5_jacobian.py sha256:aa1934e6e4ddc204
+#   support.py sha256:16c338d55e9ba950
+#   flight_jacobian.py sha256:13677e49e2d4419b
+#   geyer_jacobian.py sha256:9e6612ae43bfb830
+#   geyer_vs_jacobian.py sha256:cf334acae52369c1
+#   gravity_jacobian.py sha256:2d7b7adc6772b195
+#   gravity_type5_jacobian.py sha256:f31ced069f67be3a
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""

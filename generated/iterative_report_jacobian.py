@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:67f73baeb9937252
-#   flight_jacobian.py sha256:d83a0fc7783e9ae2
-#   geyer_vs_jacobian.py sha256:7141f9e587a8ed6c
-#   iterative_jacobian.py sha256:9e85501ffe876ae4
+#   support.py sha256:16c338d55e9ba950
+#   flight_jacobian.py sha256:13677e49e2d4419b
+#   geyer_vs_jacobian.py sha256:cf334acae52369c1
+#   iterative_jacobian.py sha256:823d24ae8188ce53
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""

@@ -24,10 +24,12 @@ on a kernel's stack, a row's store and its checks.
 - ``store(a, (v0, v1, ...))`` and ``(u, w,) = load(a, 0, 3)``: a kernel's stores into a 1-D array
   (its row ``out``, the ``x``, ``p``, packed arguments or out array of a call) and its reads of one
   at constant positions, one call each; ``node_arrays(stack(n * w), n, w)``: a kernel's ``n`` node
-  arrays of ``w`` entries on its stack, one call. numba types and lowers every subscript in Python,
-  as a call of its own: with a subscript per entry, the first ``apex_return("gravity-type0")``
-  compiled in 4.2 s, with these in 2.7 s (``benchmarks/bench_first_call.py``). In plain Python
-  (a kernel's ``.py_func``) ``load`` and ``store`` are the subscripts.
+  arrays of ``w`` entries on its stack, one call; ``all_finite((v0, v1, ...))``: its check of its
+  inputs or outputs, one call. numba types and lowers every subscript and call in Python, one by
+  one: with a subscript per entry and a ``math.isfinite`` per value, the first
+  ``apex_return("gravity-type0")`` compiled in 4.2 s, with these in 2.5-2.7 s
+  (``benchmarks/bench_first_call.py``). In plain Python (a kernel's ``.py_func``) ``load``,
+  ``store`` and ``all_finite`` are the subscripts and checks they stand for.
 """
 
 import inspect
@@ -158,8 +160,9 @@ def _store_code(context, builder, signature, args):
 @type_callable(load)
 def _load_type(context):
     def typer(a, *index):
-        # numba types the positions as integers, then, on None, as the literals they are; the
-        # signature it lowers is the flat one (an array and one literal per position)
+        # numba types the positions as integers, then, on None, as the literals they are; it
+        # reads ``typer.pysig`` after this call, so the call lowers with the flat signature (an
+        # array and one literal per position) instead of folding the positions into a tuple
         if _float_row(a) and index and all(isinstance(i, types.IntegerLiteral) for i in index):
             typer.pysig = _flat(1 + len(index))
             return types.UniTuple(a.dtype, len(index))
