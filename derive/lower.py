@@ -62,7 +62,7 @@ def _names(expr) -> set[str]:
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
 _GENERATED_NAME = re.compile(
-    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|o\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+|[aop]\d+|S|code|status|L[0-9a-f]{8})|STATUS_\w+"
+    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|o\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+|[aop]\d+|code|status|L[0-9a-f]{8})|STATUS_\w+"
 )
 _TEMPLATE_NAMES = frozenset(
     {"i", "out", "status", "math", "np", "njit", "carray", "NAN"}
