@@ -121,7 +121,7 @@ def measure(repeat: int, seconds: float, every: int = 1) -> dict:
     rows, calls = [], []
     for label, name, options in VARIANTS:
         by_grid, n_total = [], 0
-        pooled_ref = {k: [] for k in ("status", "apex_height", "apex_speed")}
+        pooled_ref = {k: [] for k in ("status", "next_apex_height", "next_apex_speed")}
         pooled_got = {k: [] for k in pooled_ref}
         for g, pt, ref in zip(grids, points, refs, strict=True):
             got = slipmaps.apex_return_batch(name, g.params, *pt, **options)  # compiles or loads

@@ -13,6 +13,8 @@ import sympy as sp
 from sympy.core.function import UndefinedFunction
 from sympy.printing.latex import LatexPrinter
 
+from . import params
+
 
 def replace_between(text: str, key: str, body: str, where: str = "README.md") -> str:
     """``text`` (the file ``where``) with the part between ``<!-- key:begin ... -->`` and
@@ -111,8 +113,9 @@ def maps_page(index: dict) -> str:
         "",
         "Stance outputs: " + ", ".join(f"`{r['name']}` [{r['unit']}]" for r in index["STANCE_OUTPUTS"]) + ".",
         "",
-        "Apex-return outputs: "
-        + ", ".join(f"`{r['name']}` [{r['unit']}]" for r in index["APEX_OUTPUTS"])
+        "Apex-return outputs (the next apex is `next_apex_height`, `next_apex_speed`; the apex a step "
+        "starts from is its input `apex_height`, `apex_speed`): "
+        + ", ".join(f"`{params.public_output(r['name'])}` [{r['unit']}]" for r in index["APEX_OUTPUTS"])
         + ".",
         "",
         maps_table(index),

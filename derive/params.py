@@ -21,7 +21,7 @@ Domains (the checks both the kernels and the Python layer make):
 
 from __future__ import annotations
 
-__all__ = ["ALIASES", "APEX_INPUTS", "DOMAINS", "PARAMETERS"]
+__all__ = ["ALIASES", "APEX_INPUTS", "DOMAINS", "NEXT", "PARAMETERS", "public_output"]
 
 DOMAINS = ("positive", "leg_length", "non_negative", "leg_angle", "real")
 
@@ -110,3 +110,14 @@ APEX_INPUTS: tuple[dict, ...] = (
         "default": 0.0,
     },
 )
+
+#: The prefix of a result value that is the next value of an input: the apex-return kernels write
+#: the next apex as ``apex_height`` and ``apex_speed``, the names of two inputs above, and every
+#: result of the API (and docs/maps.md) calls it ``next_apex_height``, ``next_apex_speed``
+#: (slipmaps.runtime.api.names applies :func:`public_output`; the kernels keep their names).
+NEXT = "next_"
+
+
+def public_output(name: str) -> str:
+    """A map output's public name: ``next_`` + its name when an apex-return input has that name."""
+    return NEXT + name if any(r["name"] == name for r in APEX_INPUTS) else name

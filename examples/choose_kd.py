@@ -59,7 +59,7 @@ def from_bottom(bottom) -> callable:
 
 def from_apex(k_d: float) -> float:
     """Next apex height for k_d by the simple variable-stiffness map, planned at the apex."""
-    return slipmaps.apex_return("geyer-vs", _with_kd(k_d), *APEX).apex_height
+    return slipmaps.apex_return("geyer-vs", _with_kd(k_d), *APEX).next_apex_height
 
 
 def newton(height, target: float, k_d: float) -> tuple[float, int]:
@@ -82,7 +82,7 @@ def choose(target: float) -> list[Choice]:
     out = []
     for planner, height in (("iterative-decompression", from_bottom(bottom)), ("geyer-vs", from_apex)):
         k_d, steps = newton(height, target, PARAMS.k_c)
-        exact = slipmaps.apex_return("exact", _with_kd(k_d), *APEX).apex_height
+        exact = slipmaps.apex_return("exact", _with_kd(k_d), *APEX).next_apex_height
         out.append(Choice(planner, target, k_d, height(k_d), exact, steps))
     return out
 

@@ -45,8 +45,8 @@ _MEASURE = """
 import json as _json
 import numpy as _np
 from slipmaps.runtime.exact.reference import simulate_step as _step
-_out = {"printed": [soled.apex_height, higher.apex_height]}
-_out["printed"] += [jac["apex_height", "sole"], jac["apex_height", "ground"]]
+_out = {"printed": [soled.next_apex_height, higher.next_apex_height]}
+_out["printed"] += [jac["next_apex_height", "sole"], jac["next_apex_height", "ground"]]
 for _name in ("geyer", "iterative", "exact"):
     _a = slipmaps.apex_return(_name, runner, 1.05, 4.0, 0.3, sole=0.03)
     _b = slipmaps.apex_return(_name, runner, 1.05, 4.0, 0.3, ground=0.03)
@@ -64,7 +64,7 @@ for _name in ("geyer", "iterative", "exact"):
         "column": float(_np.max(_np.abs(_ja.matrix[_rows, _ja.inputs.index("sole")]
                                         - _jb.matrix[_rows, _jb.inputs.index("ground")]))),
         "inputs": list(_ja.inputs),
-        "apex": [_a.apex_height, _a.apex_speed],
+        "apex": [_a.next_apex_height, _a.next_apex_speed],
     }
 _r = _step(runner, 1.05, 4.0, 0.3, sole=0.03)
 _out["reference"] = [_r.status.name, *_r.next_apex]

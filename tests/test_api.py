@@ -77,11 +77,13 @@ def test_one_result_family_for_every_map(name):
     assert len(st.liftoff) == 4 and st.liftoff[0] == pytest.approx(P.q_r_lo, rel=1e-12)
     assert st["t_stance"] == st.t_stance > st.t_bottom > 0
     ap = slipmaps.apex_return(name, P, 1.0, 5.0, 0.35)
-    assert ap.ok and {"apex_height", "apex_speed", "t_descent", "t_stance", "t_ascent"} <= set(ap.values)
+    assert ap.ok and {"next_apex_height", "next_apex_speed", "t_descent", "t_stance", "t_ascent"} <= set(
+        ap.values
+    )
     if next(m for m in slipmaps.maps() if m.name == name).as_printed:
         return  # reproduces the report's formulas to measure them (iterative-report: 1.035 m)
     # exact: 0.917730 m; measured errors of the maps: -1.5 mm (type 0) to +0.84 mm (type 5)
-    assert ap.apex_height == pytest.approx(0.917730, abs=0.003)
+    assert ap.next_apex_height == pytest.approx(0.917730, abs=0.003)
 
 
 def test_stance_batch_rows_equal_scalar_calls_and_bad_rows_get_their_own_status():
@@ -138,11 +140,13 @@ def test_apex_return_batch_broadcasts_and_keeps_the_shape():
     speeds = np.array([3.0, 4.0, 5.0])
     angles = np.array([[0.30], [0.35]])
     res = slipmaps.apex_return_batch("geyer", P, 1.0, speeds, angles)
-    assert res.shape == (2, 3) and res["apex_height"].shape == (2, 3) and res["liftoff"].shape == (2, 3, 4)
+    assert (
+        res.shape == (2, 3) and res["next_apex_height"].shape == (2, 3) and res["liftoff"].shape == (2, 3, 4)
+    )
     for i, a in enumerate(angles[:, 0]):
         for j, v in enumerate(speeds):
             one = slipmaps.apex_return("geyer", P, 1.0, v, a)
-            assert res["apex_speed"][i, j] == one.apex_speed and res["status"][i, j] == one.status
+            assert res["next_apex_speed"][i, j] == one.next_apex_speed and res["status"][i, j] == one.status
 
 
 def test_exact_batch_equals_scalar_and_marks_invalid_rows():
@@ -237,7 +241,7 @@ def test_readme_python_example_runs():
     namespace: dict = {}
     exec(compile(block, "docs/getting_started.md", "exec"), namespace)  # noqa: S102 - the project's own docs
     assert namespace["step"].ok and namespace["st"].ok
-    assert namespace["res"]["apex_height"].shape == (300, 400)
+    assert namespace["res"]["next_apex_height"].shape == (300, 400)
 
 
 _APEX_FUNCTIONS = ("apex_return", "apex_return_batch", "apex_return_jacobian", "apex_return_jacobian_batch")
@@ -304,7 +308,7 @@ def test_deadbeat_picks_the_controls_a_map_has():
 
     P = slipmaps.HUMAN_RUNNER
     res = slipmaps.deadbeat("geyer", P, 1.0, 5.0, None, 5.0)
-    assert res.status == "REACHED" and abs(res.apex_speed - 5.0) < 1e-6
+    assert res.status == "REACHED" and abs(res.next_apex_speed - 5.0) < 1e-6
     assert Deadbeat("geyer", P).controls == ("touchdown_angle",)
     assert Deadbeat("iterative", P).controls == ("touchdown_angle", "k_d")
 

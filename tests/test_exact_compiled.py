@@ -219,7 +219,7 @@ def test_failures_match_solve_ivp(params, height, speed, angle, status):
     assert ref.status == got_status == status, ref.message
     assert all(math.isnan(v) for v in got.values())
     api = slipmaps.apex_return("exact", params, height, speed, angle)
-    assert api.status == status and math.isnan(api.apex_height)
+    assert api.status == status and math.isnan(api.next_apex_height)
 
 
 def test_stance_failures_match_solve_ivp():
@@ -278,7 +278,9 @@ def test_apex_batch_rows_equal_scalar_calls_and_invalid_rows_get_invalid_input()
     # Broadcasting keeps the shape, as for the generated maps.
     grid = slipmaps.apex_return_batch("exact", p, 0.26, np.array([1.2, 1.5]), np.array([[0.28], [0.32]]))
     assert grid.shape == (2, 2) and grid["liftoff"].shape == (2, 2, 4) and grid.ok.all()
-    assert grid["apex_height"][1, 0] == slipmaps.apex_return("exact", p, 0.26, 1.2, 0.32).apex_height
+    assert (
+        grid["next_apex_height"][1, 0] == slipmaps.apex_return("exact", p, 0.26, 1.2, 0.32).next_apex_height
+    )
 
 
 # ----------------------------------------------------------------------------------------------

@@ -20,7 +20,9 @@ def test_batch_result_to_pandas_has_a_row_per_point_and_status_names():
         slipmaps.Status(int(c)).name for c in res.status.reshape(-1)
     ]
     assert (df["status"] == "OK").sum() == 3 and df["status_code"].dtype.kind == "i"
-    assert np.array_equal(df["apex_height"].to_numpy(), res["apex_height"].reshape(-1), equal_nan=True)
+    assert np.array_equal(
+        df["next_apex_height"].to_numpy(), res["next_apex_height"].reshape(-1), equal_nan=True
+    )
     assert {"liftoff_q_r", "liftoff_q_thd"} <= set(df.columns)
     table = res.to_arrow()
     assert table.num_rows == 4 and table.column_names == list(df.columns)
@@ -29,9 +31,9 @@ def test_batch_result_to_pandas_has_a_row_per_point_and_status_names():
 def test_jacobian_batch_to_pandas_names_every_derivative():
     jb = slipmaps.apex_return_jacobian_batch("geyer", P, [1.0, 1.05], 5.0, 0.35)
     df = jb.to_pandas()
-    name = "d(apex_height)/d(touchdown_angle)"
+    name = "d(next_apex_height)/d(touchdown_angle)"
     assert name in df.columns and len(df) == 2
-    assert np.array_equal(df[name].to_numpy(), jb["apex_height", "touchdown_angle"])
+    assert np.array_equal(df[name].to_numpy(), jb["next_apex_height", "touchdown_angle"])
     derivatives = [c for c in df.columns if c.startswith("d(")]
     assert len(derivatives) == len(jb.outputs) * len(jb.inputs)
 

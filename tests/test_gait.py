@@ -72,7 +72,7 @@ def test_newton_equals_brentq(name, runner_5ms):
     p = runner_5ms[name]
 
     def gap(a: float) -> float:
-        return slipmaps.apex_return(name, P, 1.0, 5.0, a).apex_height - 1.0
+        return slipmaps.apex_return(name, P, 1.0, 5.0, a).next_apex_height - 1.0
 
     root = brentq(gap, p.touchdown_angle - 0.01, p.touchdown_angle + 0.01, xtol=1e-15, rtol=1e-15)
     assert abs(p.touchdown_angle - root) <= 1e-12
@@ -84,7 +84,7 @@ def _slope(name: str, p: gait.FixedPoint, d: float = 1e-5) -> float:
 
     def h_next(h: float) -> float:
         v = math.sqrt(2.0 * (e - P.g_f * h))
-        return slipmaps.apex_return(name, P, h, v, p.touchdown_angle).apex_height
+        return slipmaps.apex_return(name, P, h, v, p.touchdown_angle).next_apex_height
 
     return (h_next(p.apex_height + d) - h_next(p.apex_height - d)) / (2.0 * d)
 
@@ -326,11 +326,11 @@ def test_geyers_unit_multiplier_is_its_curve_of_fixed_points(runner_5ms):
     for h in (0.98, 1.02, 1.05):
 
         def gap(v: float, h: float = h) -> float:
-            return slipmaps.apex_return("geyer", P, h, v, th).apex_height - h
+            return slipmaps.apex_return("geyer", P, h, v, th).next_apex_height - h
 
         v = brentq(gap, 4.5, 5.5, xtol=1e-15, rtol=1e-15)
         step = slipmaps.apex_return("geyer", P, h, v, th)
-        assert abs(step.apex_height - h) < 1e-12 and abs(step.apex_speed - v) < 1e-12, h
+        assert abs(step.next_apex_height - h) < 1e-12 and abs(step.next_apex_speed - v) < 1e-12, h
         energies.append(gait.energy_of(P, h, v))
     assert max(energies) - min(energies) > 1.0  # [J]: not one energy level
 

@@ -258,7 +258,7 @@ def test_apex_return_is_exact_descent_stance_map_exact_ascent(params):
                 n_ok += 1
                 assert res.t_descent == ex.t_descent and res.t_stance == st.t_stance
                 assert res.liftoff == st.liftoff
-                assert (res.apex_height, res.apex_speed, res.t_ascent) == (*apex, t_ascent)
+                assert (res.next_apex_height, res.next_apex_speed, res.t_ascent) == (*apex, t_ascent)
     # Measured: 38, 29 and 43 of the 80 steps OK; the others APEX_TOO_LOW (no touchdown from the
     # lowest apexes), LIFTOFF_DOWNWARD / LIFTOFF_BACKWARD (too steep or too shallow a leg), NO_LIFTOFF.
     assert n_ok >= 25
@@ -277,10 +277,10 @@ def test_vertical_hop_is_a_valid_gait(params, height):
     for name, rel in ((MAP, 1e-14), ("exact", 1e-10)):
         res = slipmaps.apex_return(name, params, h, 0.0, 0.0)
         assert res.status == Status.OK, (name, res.message)
-        assert abs(res.apex_speed) <= 1e-12, name  # measured: exactly 0 (-0.0) for both
+        assert abs(res.next_apex_speed) <= 1e-12, name  # measured: exactly 0 (-0.0) for both
         # Measured relative apex height errors: Geyer 1.9e-16 (the symmetric stance conserves the
         # energy), exact 1.1e-11 (integration, rtol 1e-11).
-        assert res.apex_height == pytest.approx(h, rel=rel), name
+        assert res.next_apex_height == pytest.approx(h, rel=rel), name
         assert res.liftoff[2] == 0.0 and res.liftoff[3] == 0.0, name
 
 

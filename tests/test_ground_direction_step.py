@@ -74,7 +74,7 @@ def test_running_backward_is_the_mirror_image_bitwise(name):
     for h, v, th, ground in ((1.0, 5.0, 0.35, 0.0), (1.05, 3.0, 0.30, 0.04), (0.95, 6.5, 0.45, -0.05)):
         fwd = slipmaps.apex_return(name, params, h, v, th, ground=ground)
         bwd = slipmaps.apex_return(name, params, h, -v, -th, ground=ground)
-        assert fwd.ok and bwd.ok and fwd.apex_speed > 0 > bwd.apex_speed, (fwd.message, bwd.message)
+        assert fwd.ok and bwd.ok and fwd.next_apex_speed > 0 > bwd.next_apex_speed, (fwd.message, bwd.message)
         _assert_mirror(fwd.values, bwd.values)
     td = (1.0, -1.5, 0.35, -4.5)
     fwd = slipmaps.stance(name, params, td)
@@ -124,7 +124,7 @@ def test_a_vertical_hop_is_a_valid_step_that_stays_vertical(name):
     """Apex speed 0 and a vertical leg: the step stays in place (speed, angles and length exactly 0)."""
     res = slipmaps.apex_return(name, _params(name), 1.1, 0.0, 0.0)
     assert res.ok, res.message
-    assert res.apex_speed == 0.0 and res.step_length == 0.0 and res.foot_x == 0.0
+    assert res.next_apex_speed == 0.0 and res.step_length == 0.0 and res.foot_x == 0.0
     assert res.liftoff_q_th == 0.0 and res.liftoff_q_thd == 0.0
 
 

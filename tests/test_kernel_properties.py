@@ -1079,4 +1079,4 @@ def test_public_vertical_hop_is_a_valid_gait(name):
         h = 1.2 * params.l0
         res = slipmaps.apex_return(name, params, h, 0.0, 0.0)
         assert res.status == Status.OK, res.message
-        assert abs(res.apex_speed) <= 1e-12 and res.apex_height == pytest.approx(h, rel=1e-10)
+        assert abs(res.next_apex_speed) <= 1e-12 and res.next_apex_height == pytest.approx(h, rel=1e-10)

@@ -86,7 +86,7 @@ def test_every_map_touches_down_at_the_swung_angle_and_mirrors(name):
     assert fwd.touchdown_q_th == pytest.approx(0.40 - 0.8 * fwd.t_descent, rel=1e-15)
     assert fwd.touchdown_q_th < 0.40
     assert bwd.touchdown_q_th == -fwd.touchdown_q_th
-    assert bwd.apex_height == fwd.apex_height and bwd.apex_speed == -fwd.apex_speed
+    assert bwd.next_apex_height == fwd.next_apex_height and bwd.next_apex_speed == -fwd.next_apex_speed
 
 
 @pytest.mark.parametrize("rate", [-1.5, -0.5, 0.5])
@@ -95,8 +95,8 @@ def test_the_exact_map_with_retraction_is_the_solve_ivp_reference(rate):
     exact = slipmaps.apex_return("exact", VS, 1.05, 5.0, 0.5, retraction_rate=rate)
     ref = simulate_step(VS, 1.05, 5.0, 0.5, retraction_rate=rate, rtol=1e-12, atol=1e-12)
     assert exact.ok and ref.status == slipmaps.Status.OK, (exact.message, ref.message)
-    assert exact.apex_height == pytest.approx(ref.next_apex[0], rel=1e-9)
-    assert exact.apex_speed == pytest.approx(ref.next_apex[1], rel=1e-9)
+    assert exact.next_apex_height == pytest.approx(ref.next_apex[0], rel=1e-9)
+    assert exact.next_apex_speed == pytest.approx(ref.next_apex[1], rel=1e-9)
 
 
 def test_rates_beyond_the_concave_range_or_past_the_horizontal_are_refused():
@@ -106,7 +106,7 @@ def test_rates_beyond_the_concave_range_or_past_the_horizontal_are_refused():
     bound = math.sqrt(P.g_f / P.q_r_td)
     r = slipmaps.apex_return("geyer", P, 1.0, 5.0, 0.35, retraction_rate=-1.001 * bound)
     assert r.status == slipmaps.Status.INVALID_INPUT, r.message
-    assert math.isnan(r.apex_height)
+    assert math.isnan(r.next_apex_height)
     assert slipmaps.apex_return("geyer", P, 1.0, 5.0, 0.35, retraction_rate=-0.999 * bound).status != (
         slipmaps.Status.INVALID_INPUT
     )

@@ -57,10 +57,10 @@ _exact = slipmaps.apex_return("exact", runner, 1.0, 5.0, 0.35)
 _h = 1e-6
 _up, _down = (slipmaps.apex_return("geyer-angle2", runner, 1.0, 5.0, 0.35 + s * _h) for s in (1, -1))
 print(_json.dumps({
-    "status": step.status.name, "height": step.apex_height, "speed": step.apex_speed,
-    "exact": [_exact.apex_height, _exact.apex_speed],
-    "jacobian": jac["apex_height", "touchdown_angle"], "finite": bool(_math.isfinite(jac.matrix.sum())),
-    "difference": (_up.apex_height - _down.apex_height) / (2 * _h),
+    "status": step.status.name, "height": step.next_apex_height, "speed": step.next_apex_speed,
+    "exact": [_exact.next_apex_height, _exact.next_apex_speed],
+    "jacobian": jac["next_apex_height", "touchdown_angle"], "finite": bool(_math.isfinite(jac.matrix.sum())),
+    "difference": (_up.next_apex_height - _down.next_apex_height) / (2 * _h),
 }))
 """
 

@@ -80,7 +80,7 @@ def test_eq97_energy_jump_moves_the_next_apex_the_right_way():
         for name in (MAP, "exact"):
             res = slipmaps.apex_return(name, _params(ratio), 1.0, 5.0, 0.35)
             assert res.ok, (name, res.message)
-            heights[name, ratio] = res["apex_height"]
+            heights[name, ratio] = res["next_apex_height"]
     for name in (MAP, "exact"):
         assert heights[name, 0.9] < heights[name, 1.0] < heights[name, 1.1], heights
 

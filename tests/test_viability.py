@@ -146,8 +146,8 @@ def test_viable_pairs_survive_many_exact_steps(demo):
         angle = ANGLES[j]
         for _ in range(30):
             step = slipmaps.apex_return("exact", VIBLY, h, v, angle)
-            assert step.ok and step.apex_speed > 0, (i, j, step.status)
-            h, v = step.apex_height, step.apex_speed
+            assert step.ok and step.next_apex_speed > 0, (i, j, step.status)
+            h, v = step.next_apex_height, step.next_apex_speed
             assert lo <= h <= hi
             angle = _step_choice(demo, h)
 
@@ -367,8 +367,8 @@ def test_two_stage_viable_pairs_survive_random_grounds(robust):
             kd = robust.k_d[middle([choices[n][a, :, u] for n in at])]
             params = VIBLY.with_(k_d=float(kd))
             step = slipmaps.apex_return("exact", params, h, v, robust.touchdown_angle[a], ground=GROUNDS[u])
-            assert step.ok and step.apex_speed > 0, ((i, j, a), steps, step.status)
-            h, v = step.apex_height, step.apex_speed
+            assert step.ok and step.next_apex_speed > 0, ((i, j, a), steps, step.status)
+            h, v = step.next_apex_height, step.next_apex_speed
             at = nodes(h, v)
             a = middle([two.viable[n] for n in at])
             steps += 1

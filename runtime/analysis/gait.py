@@ -375,18 +375,21 @@ def _brackets(x: np.ndarray, f: np.ndarray, ok: np.ndarray) -> list[tuple[float,
 
 def _derivative(jr, tangent: dict[str, float]) -> float:
     """d(h' - h)/dx along the line: sum over the inputs of dh'/d input * d input/dx, minus dh/dx."""
-    return sum(jr["apex_height", k] * t for k, t in tangent.items() if t) - tangent["apex_height"]
+    return sum(jr["next_apex_height", k] * t for k, t in tangent.items() if t) - tangent["apex_height"]
 
 
 def _point(name, params, line, x, jr, iterations, status) -> FixedPoint:
     h, v, th = (float(c) for c in line.point(x))
     res = jr.result
     nan = math.nan
-    dh, dv = (res.apex_height - h, res.apex_speed - v) if res.ok else (nan, nan)
+    dh, dv = (res.next_apex_height - h, res.next_apex_speed - v) if res.ok else (nan, nan)
     lam, mult, drift = nan, (complex(nan, nan),) * 2, nan
     if status == Status.OK and jr.ok:
         a = np.array(
-            [[jr[o, i] for i in ("apex_height", "apex_speed")] for o in ("apex_height", "apex_speed")]
+            [
+                [jr[o, i] for i in ("apex_height", "apex_speed")]
+                for o in ("next_apex_height", "next_apex_speed")
+            ]
         )
         lam = float(a[0, 0] + a[0, 1] * (-params.g_f / v)) if v > 0.0 else nan
         z = sorted(np.linalg.eigvals(a).astype(complex), key=lambda c: abs(c - 1.0))
@@ -409,7 +412,7 @@ def _refine(name, params, line, a, b, fa, fb, options) -> FixedPoint:
         jr = apex_jacobian(name, params, *line.point(x), **options)
         if not jr.result.ok:  # a step inside the bracket fails: no fixed point to report there
             return _point(name, params, line, x, jr, it, Status(int(jr.result.status)))
-        f = jr.result.apex_height - line.point(x)[0]
+        f = jr.result.next_apex_height - line.point(x)[0]
         if abs(f) <= FTOL:
             return _point(name, params, line, x, jr, it, Status.OK)
         if (f < 0.0) == (fa < 0.0):
@@ -424,7 +427,7 @@ def _refine(name, params, line, a, b, fa, fb, options) -> FixedPoint:
             jr = apex_jacobian(name, params, *line.point(x_new), **options)
             if not jr.result.ok:
                 status = Status(int(jr.result.status))
-            elif abs(jr.result.apex_height - line.point(x_new)[0]) > RESIDUAL_TOL:
+            elif abs(jr.result.next_apex_height - line.point(x_new)[0]) > RESIDUAL_TOL:
                 status = Status.NOT_CONVERGED  # the bracket holds a jump of h', not a root
             else:
                 status = Status.OK
@@ -472,6 +475,6 @@ def fixed_points(
         )
         return FixedPoints(status=Status.APEX_TOO_LOW, message=message)
     res = apex_return_batch(name, params, *line.point(x), progress=progress, **options)
-    f = np.asarray(res["apex_height"]) - np.asarray(line.point(x)[0])
+    f = np.asarray(res["next_apex_height"]) - np.asarray(line.point(x)[0])
     points = [_refine(name, params, line, *br, options) for br in _brackets(x, f, np.asarray(res.ok))]
     return _searched(points, res.counts())

@@ -112,7 +112,7 @@ def steps(name, params, heights, speeds, angles, rates, energy, ground, options)
     kwargs = {} if rates is None else {"retraction_rate": np.asarray(rates, dtype=float).reshape(1, 1, -1)}
     res = apex_return_batch(name, params, h, v, a, ground=ground, progress=False, **kwargs, **options)
     code = res["status"]
-    h1, v1 = res["apex_height"], res["apex_speed"]
+    h1, v1 = res["next_apex_height"], res["next_apex_speed"]
     bad = (code != int(Status.OK)) | ~(v1 > 0.0)
     if energy is None:
         step = np.stack([h1, v1], axis=-1)

@@ -64,9 +64,9 @@ def errors_on(got: Mapping, ref: Mapping) -> dict:
     ``ref`` (``apex_return_batch`` results on the same states): mean and max over the states where
     both complete the step, and the failures (``got`` fails where ``ref`` does not)."""
     both = (got["status"] == 0) & (ref["status"] == 0)
-    dh = got["apex_height"] - ref["apex_height"]
-    dv = got["apex_speed"] - ref["apex_speed"]
-    err = (np.hypot(dh, dv) / np.hypot(ref["apex_height"], ref["apex_speed"]))[both]
+    dh = got["next_apex_height"] - ref["next_apex_height"]
+    dv = got["next_apex_speed"] - ref["next_apex_speed"]
+    err = (np.hypot(dh, dv) / np.hypot(ref["next_apex_height"], ref["next_apex_speed"]))[both]
     return {
         "mean_error": float(err.mean()) if err.size else math.nan,
         "max_error": float(err.max()) if err.size else math.nan,

@@ -21,6 +21,7 @@ from functools import cache, cached_property
 
 from slipmaps.generated import maps_index
 
+from .names import public_names
 from .numeric import NotANumber, is_real, num
 from .params import SlipParams
 from .validate import check_params
@@ -71,6 +72,11 @@ class KernelSpec:
             wrt=tuple(row.get("wrt", ())),
             base=row.get("base"),
         )
+
+    @cached_property
+    def public_outputs(self) -> tuple[str, ...]:
+        """The outputs by the API's names (:mod:`.names`: the next apex ``next_apex_height`` ...)."""
+        return public_names(self.outputs)
 
     @cached_property
     def record_only(self) -> frozenset[str]:

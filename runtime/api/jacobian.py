@@ -4,8 +4,8 @@
   (``t_bottom``, ``t_stance``, ``bottom_*``, ``liftoff_*``, then the map's extras), columns the
   touchdown state ``q_r_td, q_rd_td, q_th_td, q_thd_td`` and the stiffness.
 - :func:`apex_return_jacobian` (``name, params, apex_height, apex_speed, touchdown_angle,
-  ground=, retraction_rate=``): rows are the apex-return outputs (``apex_height`` and
-  ``apex_speed`` of the NEXT apex, the flight and stance times, ``liftoff_*``, ``step_length``,
+  ground=, retraction_rate=``): rows are the apex-return outputs (the next apex
+  ``next_apex_height``, ``next_apex_speed``, the flight and stance times, ``liftoff_*``, ``step_length``,
   ``foot_x``, ``foot_y``, ``touchdown_q_th``, extras), columns the apex-return inputs
   (derive/params.py: ``apex_height, apex_speed, touchdown_angle, ground, retraction_rate``) and
   the stiffness.
@@ -45,9 +45,9 @@ from slipmaps.generated.status import MESSAGES, Status
 from .calls import Call, Columns
 from .frames import to_arrow, to_pandas
 from .inputs import apex_signature
-from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
+from .maps import apex_inputs, apex_rows, given_inputs, state_rows, touchdown_inputs
 from .params import SlipParams
-from .results import GROUPS, BatchResult, Result
+from .results import GROUPS, BatchResult, Result, renamed
 from .validate import polar_state
 
 __all__ = [
@@ -74,10 +74,11 @@ def _indices(key: str, names: tuple[str, ...]) -> list[int]:
     raise KeyError(f"{key!r} is not among {', '.join(names)} (nor a group of them)")
 
 
-def _block(matrix: np.ndarray, outputs, inputs, key):
+def _block(matrix: np.ndarray, outputs, inputs, key, kind: str):
     if not (isinstance(key, tuple) and len(key) == 2):
-        raise KeyError("index a Jacobian by (output, input), e.g. jac['apex_height', 'touchdown_angle']")
-    i, j = _indices(key[0], outputs), _indices(key[1], inputs)
+        raise KeyError("index a Jacobian by (output, input), e.g. jac['next_apex_height', 'touchdown_angle']")
+    output = key[0] if key[0] in outputs else renamed(key[0], outputs, kind, 3) or key[0]
+    i, j = _indices(output, outputs), _indices(key[1], inputs)
     block = matrix[..., i, :][..., j]
     if len(i) == 1 and len(j) == 1:
         return block[..., 0, 0] if block.ndim > 2 else float(block[0, 0])
@@ -92,8 +93,8 @@ def _block(matrix: np.ndarray, outputs, inputs, key):
 class Jacobian:
     """One map's outputs and their derivatives at one point.
 
-    ``jac.matrix[i, j]`` is d ``outputs[i]`` / d ``inputs[j]``; ``jac["apex_height", "apex_speed"]``
-    one entry, ``jac["liftoff", "touchdown"]`` a block (groups ``bottom``, ``liftoff``,
+    ``jac.matrix[i, j]`` is d ``outputs[i]`` / d ``inputs[j]``; ``jac["next_apex_height",
+    "apex_speed"]`` one entry, ``jac["liftoff", "touchdown"]`` a block (groups ``bottom``, ``liftoff``,
     ``touchdown``). ``jac.result`` is the map's :class:`~.results.Result` at the point (the values
     are those of ``slipmaps.stance`` / ``slipmaps.apex_return`` to round-off). NaN unless OK.
     """
@@ -117,7 +118,7 @@ class Jacobian:
         return Result(self.map, self.kind, self.status, self.message, dict(self.values), dict(self.point))
 
     def __getitem__(self, key):
-        return _block(self.matrix, self.outputs, self.inputs, key)
+        return _block(self.matrix, self.outputs, self.inputs, key, self.kind)
 
 
 @dataclass(frozen=True)
@@ -164,17 +165,18 @@ class JacobianBatch:
         return to_arrow(self.columns())
 
     def __getitem__(self, key):
-        return _block(self.matrix, self.outputs, self.inputs, key)
+        return _block(self.matrix, self.outputs, self.inputs, key, self.kind)
 
 
 # ----------------------------------------------------------------------------------------------
 # Every map: the role's kernel (values, then d output_i / d input_j row-major), by name
 # ----------------------------------------------------------------------------------------------
 def _names(call: Call, role: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
-    """(outputs, inputs) of a Jacobian: its rows and its columns (public names for the apex)."""
+    """(outputs, inputs) of a Jacobian: its rows and its columns, by their public names (the next
+    apex ``next_apex_height`` ..., :mod:`.names`; the apex-return inputs' API names)."""
     spec = call.spec(role)
     wrt = tuple(_PUBLIC.get(w, w) for w in spec.wrt) if role == "apex_return_jacobian" else spec.wrt
-    return spec.outputs, wrt
+    return spec.public_outputs, wrt
 
 
 def _split(row: np.ndarray, n_out: int, n_in: int) -> tuple[np.ndarray, np.ndarray]:
@@ -229,7 +231,7 @@ def apex_return_jacobian(name: str, params: SlipParams, given: dict, **options) 
     return _jacobian(call, "apex_return_jacobian", status, row, point)
 
 
-def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape) -> JacobianBatch:
+def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape, given) -> JacobianBatch:
     """The batch's values and Jacobians as views of the kernel's ``out`` (no copy of the wide
     output): the batch kernels already report a row whose derivative is not finite as
     NUMERICAL_RANGE with NaN everywhere (derive/templates/kernels.py.j2), and a failed row is NaN."""
@@ -238,7 +240,7 @@ def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape) ->
     _mask_rest_length(call, inputs, jac)
     jac.setflags(write=False)
     kind = role.removesuffix("_jacobian")
-    result = BatchResult(call.info.name, kind, outputs, data, status, shape)
+    result = BatchResult(call.info.name, kind, outputs, data, status, shape, given)
     return JacobianBatch(
         call.info.name, kind, outputs, inputs, result, jac.reshape(*shape, len(outputs), len(inputs))
     )
@@ -249,8 +251,9 @@ def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) 
     call = Call.of(name, params, options)
     arr = state_rows(params, touchdowns)
     n = arr.shape[0]
-    out, status = call.rows("stance_jacobian", Columns(arr, call.spec("stance_jacobian").x), {}, n)
-    return _batch(call, "stance_jacobian", out, status, (n,))
+    td = Columns(arr, call.spec("stance_jacobian").x)
+    out, status = call.rows("stance_jacobian", td, {}, n)
+    return _batch(call, "stance_jacobian", out, status, (n,), td)
 
 
 @apex_signature
@@ -260,4 +263,4 @@ def apex_return_jacobian_batch(name: str, params: SlipParams, given: dict, **opt
     call = Call.of(name, params, options)
     rows, inputs, shape = apex_rows(given)
     out, status = call.rows("apex_return_jacobian", rows, inputs, math.prod(shape))
-    return _batch(call, "apex_return_jacobian", out, status, shape)
+    return _batch(call, "apex_return_jacobian", out, status, shape, given_inputs(given))

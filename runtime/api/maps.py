@@ -3,15 +3,16 @@
 - :func:`stance`: polar touchdown state ``(q_r, q_rd, q_th, q_thd)`` -> bottom and liftoff states,
   ``t_bottom``, ``t_stance`` (times from touchdown) and the map's extras.
 - :func:`apex_return`: apex ``(height [m], signed speed [m/s])``, touchdown leg angle [rad] and the
-  ``ground`` under the touchdown [m] -> the next apex (``apex_height`` above the new ground,
-  ``apex_speed``), flight and stance times, liftoff state, ``step_length`` and the foot's position
-  (``foot_x``, ``foot_y``) relative to the apex; the flights are exact (ballistic, ``g_f``), only
-  the stance differs between maps. A negative speed runs toward -x, the mirror image of running
-  toward +x with the touchdown angle mirrored (every map is mirror symmetric to round-off).
+  ``ground`` under the touchdown [m] -> the next apex (``next_apex_height`` above the new ground,
+  ``next_apex_speed``; :mod:`.names`), flight and stance times, liftoff state, ``step_length`` and
+  the foot's position (``foot_x``, ``foot_y``) relative to the apex; the flights are exact
+  (ballistic, ``g_f``), only the stance differs between maps. A negative speed runs toward -x,
+  the mirror image of running toward +x with the touchdown angle mirrored (every map is mirror
+  symmetric to round-off).
 - :func:`stance_batch`, :func:`apex_return_batch`: the same over arrays, in parallel (the exact
   map's ``method="scipy"`` loops in Python); every row gets its own status, and a bad row (NaN,
   out of domain) gets ``INVALID_INPUT`` without failing the others. Apex-return inputs broadcast
-  against each other.
+  against each other; a batch result carries them (``inputs``, and its ``to_pandas()`` columns).
 - :func:`trajectory`: the polar state along the stance.
 - :func:`half_stance`, :func:`half_stance_batch`: a half-stance map (``slipmaps maps`` lists them):
   the touchdown state -> ``t_half`` and the bottom state (compression, k_c), or a bottom state
@@ -52,6 +53,7 @@ __all__ = [
     "half_stance_batch",
     "apex_inputs",
     "apex_rows",
+    "given_inputs",
     "state_rows",
     "touchdown_inputs",
 ]
@@ -63,7 +65,7 @@ _APEX_ARGS = {k: (r["arg"], CHECKS[r["domain"]]) for k, r in APEX_INPUTS.items()
 
 
 def _result(call: Call, role: str, status: Status, row, inputs: dict, message: str | None = None) -> Result:
-    names = call.spec(role).outputs
+    names = call.spec(role).public_outputs
     # a row is the kernel's outputs, one per name (the layout's width)
     values = dict(zip(names, row, strict=False)) if status == Status.OK else dict.fromkeys(names, math.nan)
     return Result.of(call.info.name, role, status, message or MESSAGES[int(status)], values, inputs)
@@ -126,8 +128,10 @@ def stance_batch(
     call = Call.of(name, params, options)
     arr = state_rows(params, touchdowns)
     n = arr.shape[0]
-    out, status = call.rows("stance", Columns(arr, call.spec("stance").x), {}, n, progress)
-    return BatchResult(call.info.name, "stance", call.spec("stance").outputs, out, status, (n,))
+    td = Columns(arr, call.spec("stance").x)
+    out, status = call.rows("stance", td, {}, n, progress)
+    names = call.spec("stance").public_outputs
+    return BatchResult(call.info.name, "stance", names, out, status, (n,), td)
 
 
 def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tuple[int, ...]]:
@@ -170,7 +174,14 @@ def apex_return_batch(
     call = Call.of(name, params, options)
     rows, inputs, shape = apex_rows(given)
     out, status = call.rows("apex_return", rows, inputs, math.prod(shape), progress)
-    return BatchResult(call.info.name, "apex_return", call.spec("apex_return").outputs, out, status, shape)
+    names = call.spec("apex_return").public_outputs
+    return BatchResult(call.info.name, "apex_return", names, out, status, shape, given_inputs(given))
+
+
+def given_inputs(given: dict) -> dict[str, object]:
+    """The apex-return inputs as a batch result carries them: by public name, a number as it is,
+    an array as given (``apex_rows`` has checked them; broadcast when read)."""
+    return {k: x if type(x) is float else np.asarray(x, dtype=float) for k, x in given.items()}
 
 
 def trajectory(
@@ -216,5 +227,7 @@ def half_stance_batch(name: str, params: SlipParams, states, **options) -> Batch
     call = Call.of(name, params, options, half=True)
     arr = state_rows(params, states, "states")
     n = arr.shape[0]
-    out, status = call.rows("half", Columns(arr, call.spec("half").x), {}, n)
-    return BatchResult(call.info.name, "half", call.spec("half").outputs, out, status, (n,))
+    start = Columns(arr, call.spec("half").x)
+    out, status = call.rows("half", start, {}, n)
+    names = call.spec("half").public_outputs
+    return BatchResult(call.info.name, "half", names, out, status, (n,), start)

@@ -39,6 +39,7 @@ from slipmaps.generated.status import Status
 
 from ..api import index, model
 from ..api.maps import apex_return_batch, stance_batch
+from ..api.names import kernel_name, public
 from ..api.progress import progress
 from ..api.results import APEX_RETURN, STANCE
 from ..exact.reference import StepResult, simulate_step, step_values
@@ -174,7 +175,7 @@ class GridRun:
     exact: list[StepResult | None]  # None where a symmetric point has no symmetric gait
     touchdowns: np.ndarray  # (n, 4), NaN where the exact step has no touchdown
     exact_status: np.ndarray  # (n,) int64, -1 where there is no exact step
-    exact_columns: dict[str, np.ndarray]  # stance and apex-return values by name, NaN unless OK
+    exact_columns: dict[str, np.ndarray]  # stance and apex-return values by result name, NaN unless OK
     results: dict[str, tuple] = field(default_factory=dict)  # label -> (variant, stance batch, apex batch)
 
     def exact_value(self, key: str) -> np.ndarray:
@@ -213,8 +214,9 @@ def run_maps(
     )
     status = np.array([int(s.status) if s is not None else -1 for s in exact], dtype=np.int64)
     names = tuple(dict.fromkeys(STANCE + APEX_RETURN))  # every stance output, then the step's others
+    kernel = [kernel_name(n) for n in names]  # the simulator's names (step_values)
     rows = np.array(
-        [[step_values(s)[n] if s is not None and s.ok else math.nan for n in names] for s in exact]
+        [[step_values(s)[k] if s is not None and s.ok else math.nan for k in kernel] for s in exact]
     )
     cols = {n: rows.reshape(-1, len(names))[:, j] for j, n in enumerate(names)}
     return run_variants(GridRun(grid, points, exact, tds.reshape(-1, 4), status, cols), chosen)
@@ -281,8 +283,8 @@ def _stats(values: np.ndarray) -> dict[str, float]:
 def apex_errors(run: GridRun, label: str) -> np.ndarray:
     """The next-apex relative error |(dh, dv)| / |(h, v)| per point (NaN unless both sides OK)."""
     _, _, ap = run.results[label]
-    h, v = run.exact_value("apex_height"), run.exact_value("apex_speed")
-    dh, dv = ap["apex_height"] - h, ap["apex_speed"] - v
+    h, v = run.exact_value("next_apex_height"), run.exact_value("next_apex_speed")
+    dh, dv = ap["next_apex_height"] - h, ap["next_apex_speed"] - v
     err = np.hypot(dh, dv) / np.hypot(h, v)
     return np.where(compared(run, label), err, math.nan)
 
@@ -320,7 +322,7 @@ class VariantStats:
 
 
 def _rel_scale(run: GridRun, key: str, scale: str) -> np.ndarray:
-    ref = run.exact_value(key)
+    ref = run.exact_value(public(key))
     if scale == "self":
         return np.abs(ref)
     if scale == "compression":
@@ -335,7 +337,7 @@ def variant_stats(run: GridRun, label: str) -> VariantStats:
     quantities = {}
     for q in QUANTITIES:
         source = ap if q.key.startswith("apex_") else st
-        err = source[q.key] - run.exact_value(q.key)
+        err = source[public(q.key)] - run.exact_value(public(q.key))
         err = np.where(ok, err, math.nan)
         rel = err / _rel_scale(run, q.key, q.rel_scale)
         a, r = _stats(np.abs(err)), _stats(np.abs(rel))

@@ -112,7 +112,7 @@ def measure_seyfarth(show_progress: bool | None = None, names: Sequence[str] | N
         "fixed_points": {n: point_rows(fixed_points(n, p, energy=energy, angle=angle)) for n in names},
         "return_map": {
             "heights": list(SEYFARTH_HEIGHTS),
-            "next": {n: apex_return_batch(n, p, h, v, angle)["apex_height"].tolist() for n in shown},
+            "next": {n: apex_return_batch(n, p, h, v, angle)["next_apex_height"].tolist() for n in shown},
         },
     }
 

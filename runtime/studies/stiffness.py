@@ -222,8 +222,9 @@ def errors(run: GridRun, label: str) -> dict[str, np.ndarray]:
     v_ex = _velocity(lo_ex)
     with np.errstate(invalid="ignore", divide="ignore"):
         raw = {
-            "apex_height": np.abs(ap["apex_height"] - ex["apex_height"]) / p.l0,
-            "apex_speed": np.abs(ap["apex_speed"] - ex["apex_speed"]) / np.abs(ex["apex_speed"]),
+            "apex_height": np.abs(ap["next_apex_height"] - ex["next_apex_height"]) / p.l0,
+            "apex_speed": np.abs(ap["next_apex_speed"] - ex["next_apex_speed"])
+            / np.abs(ex["next_apex_speed"]),
             "liftoff_velocity": np.linalg.norm(_velocity(lo_map) - v_ex, axis=1)
             / np.linalg.norm(v_ex, axis=1),
             "liftoff_angle": np.abs(lo_map[:, 2] - lo_ex[:, 2]) / np.abs(lo_ex[:, 2] - run.touchdowns[:, 2]),

@@ -101,6 +101,6 @@ def compute_rows(sweep: Sweep, start: int, stop: int) -> dict[str, np.ndarray]:
             column[rows] = res[name]
         status[rows] = res["status"]
     cols = {**inputs, **{a: points[a] for a in sweep.param_axes}}
-    cols.update(zip(sweep.output_columns, outputs.values(), strict=True))
+    cols.update(outputs)
     cols["status"] = status
     return cols

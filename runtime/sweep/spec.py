@@ -12,9 +12,8 @@ quantity's domain, an unknown name or a constant-stiffness map asked to vary one
 ValueError here, before anything runs.
 
 Output columns: the kind's inputs (all, fixed or not), the swept parameters, the batch API's
-result names (an output named like an input, the apex-return map's ``apex_height`` and
-``apex_speed``, is written ``next_apex_height``, ``next_apex_speed``), ``status`` and
-``status_name``.
+result names (the next apex ``next_apex_height``, ``next_apex_speed``: ``slipmaps.runtime.api.names``),
+``status`` and ``status_name``.
 """
 
 from __future__ import annotations
@@ -30,6 +29,7 @@ from slipmaps.generated import maps_index
 
 from ..api.files import read_toml
 from ..api.index import EXACT, MapInfo, get, maps
+from ..api.names import public
 from ..api.params import HUMAN_RUNNER, SlipParams
 from ..api.results import columns as result_columns
 from .axes import (
@@ -294,27 +294,22 @@ class Sweep:
 
     @property
     def output_names(self) -> tuple[str, ...]:
-        """The batch API's result names, in its order."""
+        """The batch API's result names, in its order: the output columns."""
         return result_columns(self.kind, get(self.map).extras)
 
     @property
-    def output_columns(self) -> tuple[str, ...]:
-        """The output names as written, with ``next_`` before a name that is also an input's."""
-        return tuple(f"next_{n}" if n in self.input_names else n for n in self.output_names)
-
-    @property
     def columns(self) -> tuple[str, ...]:
-        return (*self.input_names, *self.param_axes, *self.output_columns, "status", "status_name")
+        return (*self.input_names, *self.param_axes, *self.output_names, "status", "status_name")
 
     def described(self) -> dict[str, dict[str, str]]:
         """Each column's unit and description (SI; outputs from the generated index)."""
         known = quantities(self.kind)
         out = {n: {"unit": known[n].unit, "doc": known[n].doc} for n in (*self.input_names, *self.param_axes)}
-        rows = {r["name"]: r for r in (*maps_index.STANCE_OUTPUTS, *maps_index.APEX_OUTPUTS)}
+        rows = {public(r["name"]): r for r in (*maps_index.STANCE_OUTPUTS, *maps_index.APEX_OUTPUTS)}
         row = next((r for r in maps_index.MAPS if r["name"] == self.map), None)
         rows.update({e["name"]: e for e in (row["extras"] if row else ())})
-        for name, col in zip(self.output_names, self.output_columns, strict=True):
-            out[col] = {"unit": rows[name]["unit"], "doc": rows[name]["doc"]}
+        for name in self.output_names:
+            out[name] = {"unit": rows[name]["unit"], "doc": rows[name]["doc"]}
         out["status"] = {"unit": "", "doc": "status code (slipmaps.Status), 0 = OK"}
         out["status_name"] = {"unit": "", "doc": "status name (slipmaps.Status)"}
         return out
