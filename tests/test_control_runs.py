@@ -58,13 +58,13 @@ def test_every_example_runs_on_the_exact_plant_within_a_hundredth_of_a_millimetr
 
 
 def test_the_speed_changes_reach_their_ends(example_runs):
-    assert example_runs["speed_up"].column("next_speed")[-1] == pytest.approx(7.0, abs=1e-4)
-    assert example_runs["slow_down"].column("next_speed")[-1] == pytest.approx(3.0, abs=1e-4)
+    assert example_runs["speed_up"].column("next_apex_speed")[-1] == pytest.approx(7.0, abs=1e-4)
+    assert example_runs["slow_down"].column("next_apex_speed")[-1] == pytest.approx(3.0, abs=1e-4)
     stop = example_runs["stop"]
-    assert abs(stop.column("next_speed")[-1]) < 1e-6 and stop.column("next_height")[-1] == pytest.approx(
-        1.1, abs=1e-4
-    )
-    turn = example_runs["turn_around"].column("next_speed")
+    assert abs(stop.column("next_apex_speed")[-1]) < 1e-6 and stop.column("next_apex_height")[
+        -1
+    ] == pytest.approx(1.1, abs=1e-4)
+    turn = example_runs["turn_around"].column("next_apex_speed")
     assert turn[-1] == pytest.approx(-3.0, abs=1e-4)
     assert (turn > 0).any() and (turn < 0).any()
 
@@ -96,14 +96,14 @@ def test_a_plant_step_is_the_maps_apex_return_except_that_a_reversal_flies_on():
     for i in range(n):
         r = slipmaps.apex_return("exact", P.with_(k_d=kd[i]), h[i], v[i], th[i], ground=gr[i])
         if r.ok:
-            assert (steps.apex_height[i], steps.apex_speed[i], steps.step_length[i]) == (
-                r.apex_height,
-                r.apex_speed,
+            assert (steps.next_apex_height[i], steps.next_apex_speed[i], steps.step_length[i]) == (
+                r.next_apex_height,
+                r.next_apex_speed,
                 r.step_length,
             )
             same += 1
         elif r.status == slipmaps.Status.LIFTOFF_BACKWARD:
-            assert steps.ok[i] and steps.apex_speed[i] * v[i] < 0
+            assert steps.ok[i] and steps.next_apex_speed[i] * v[i] < 0
             reversed_ += 1
         else:
             assert steps.status[i] == r.status
@@ -115,14 +115,14 @@ def test_two_stage_plant_halves_compose_to_the_whole_stance():
     args = (np.array([1.0, 1.1]), np.array([5.0, 3.0]), np.array([0.36, 0.3]), np.zeros(2))
     whole = pl.step(*args, P.k_c, 25_000.0)
     halves = pl.decompress(pl.compress(*args, P.k_c), P.k_c, 25_000.0)
-    assert np.max(np.abs(halves.apex_height - whole.apex_height)) < 1e-13  # measured 5e-15
+    assert np.max(np.abs(halves.next_apex_height - whole.next_apex_height)) < 1e-13  # measured 5e-15
 
 
 def test_a_run_is_reproducible_and_its_noise_is_seeded():
     sc = scenarios.load(EXAMPLES / "stairs.toml").with_(noise_height=0.002, noise_speed=0.02, seed=7)
     a, b = slipmaps.run(sc), slipmaps.run(sc)
     assert np.array_equal(a.column("measured_speed"), b.column("measured_speed"))
-    assert np.array_equal(a.column("next_height"), b.column("next_height"))
+    assert np.array_equal(a.column("next_apex_height"), b.column("next_apex_height"))
     c = slipmaps.run(sc.with_(seed=8))
     assert not np.array_equal(a.column("measured_speed"), c.column("measured_speed"))
     noise = a.column("measured_height") - a.column("apex_height")
@@ -352,5 +352,5 @@ def test_a_run_to_pandas_has_a_row_per_step_and_the_states_by_coordinate(example
     assert len(df) == len(r) and list(df["step"]) == list(range(len(r)))
     assert {"touchdown_q_r", "liftoff_q_thd", "plan_status", "plant_status", "plant_status_code"} <= set(df)
     assert (df["plant_status"] == "OK").all() and (df["plan_status"] == "REACHED").all()
-    assert np.array_equal(df["next_speed"].to_numpy(), r.column("next_speed"))
+    assert np.array_equal(df["next_apex_speed"].to_numpy(), r.column("next_apex_speed"))
     assert df["liftoff_q_th"].to_numpy().tolist() == [s["liftoff"][2] for s in r.steps]

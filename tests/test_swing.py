@@ -43,7 +43,10 @@ def _foot(t, h, g, policy):
 def test_the_policy_reaches_the_target_on_every_ground_of_its_table(policy):
     assert policy.reached.all() and policy.used.all()
     assert np.all(np.diff(policy.t_touchdown) > 0)  # the highest ground meets the leg first
-    assert np.max(np.abs(policy.next_height - H)) < 1e-8 and np.max(np.abs(policy.next_speed - V)) < 1e-8
+    assert (
+        np.max(np.abs(policy.next_apex_height - H)) < 1e-8
+        and np.max(np.abs(policy.next_apex_speed - V)) < 1e-8
+    )
 
 
 def test_sec2_1_the_policys_leg_meets_every_ground_at_the_first_root_of_the_foots_height(policy):
@@ -70,8 +73,8 @@ def test_the_policys_step_on_the_exact_plant_reaches_the_target_across_its_range
     td = policy.touchdown(grounds)
     steps = Plant("exact", P).step(H, V, td["touchdown_angle"], grounds, td["k_c"], td["k_d"])
     assert steps.ok.all()
-    assert np.max(np.abs(steps.apex_height - H)) < 5e-5
-    assert np.max(np.abs(steps.apex_speed - V)) < 5e-5
+    assert np.max(np.abs(steps.next_apex_height - H)) < 5e-5
+    assert np.max(np.abs(steps.next_apex_speed - V)) < 5e-5
     assert np.allclose(steps.t_descent, td["t"], rtol=0, atol=1e-12)  # the plant's touchdown is the policy's
 
 
@@ -85,8 +88,8 @@ def test_the_time_varying_leg_against_the_exact_simulator(policy):
         ref = simulate_step(P.with_(k_d=kd), H, V, th, ground=g)
         got = plant.step(H, V, th, g, P.k_c, kd)
         assert ref.t_descent == pytest.approx(float(td["t"][0]), abs=1e-12)
-        assert got.apex_height[0] == pytest.approx(ref.next_apex[0], abs=1e-7)
-        assert got.apex_speed[0] == pytest.approx(ref.next_apex[1], abs=1e-7)
+        assert got.next_apex_height[0] == pytest.approx(ref.next_apex[0], abs=1e-7)
+        assert got.next_apex_speed[0] == pytest.approx(ref.next_apex[1], abs=1e-7)
 
 
 def test_the_interpolation_error_falls_as_the_cube_of_the_knot_spacing():
@@ -119,7 +122,7 @@ def test_an_unreachable_ground_holds_the_closest_apex_and_says_so():
     assert "UNREACHABLE" in set(status) and "REACHED" in set(status)
     bad = status == "UNREACHABLE"
     assert np.all(pol.grounds[bad] > pol.grounds[~bad].max())  # the highest grounds
-    assert np.all(np.isfinite(pol.next_height[bad]))
+    assert np.all(np.isfinite(pol.next_apex_height[bad]))
     frame = pol.to_pandas()
     assert list(frame["status"]) == list(status) and len(frame) == 16
     assert json.loads(json.dumps(pol.as_dict()))["status"] == list(status)

@@ -26,6 +26,7 @@ import math
 import numpy as np
 
 from ..api.calls import KERNELS, Call
+from ..api.names import RENAMED, Renamed, RenamedKeys, public_names
 from ..api.numeric import num
 from ..api.params import SlipParams
 from ..api.validate import check_params, polar_state, real
@@ -45,7 +46,8 @@ AIMS = {"both": (1, 1), "height": (1, 0), "speed": (0, 1)}
 
 class BottomResult(SolveStatus):
     """One bottom-stage solve: ``status`` (:class:`~.deadbeat.PlanStatus`), ``k_d``, the predicted
-    next apex ``apex_height`` / ``apex_speed``, ``residual`` (scaled), ``map_status``, ``t_half``,
+    next apex ``next_apex_height`` / ``next_apex_speed`` (the former names ``apex_height`` /
+    ``apex_speed`` still read, with a DeprecationWarning), ``residual`` (scaled), ``map_status``, ``t_half``,
     ``t_ascent``, ``liftoff`` (the polar state), ``evaluations``; ``reached``, ``ok`` as a
     :class:`~.deadbeat.DeadbeatResult`'s."""
 
@@ -70,12 +72,15 @@ class BottomResult(SolveStatus):
         return float(self._out[N_HEAD + self._outputs.index(name)])
 
     @property
-    def apex_height(self) -> float:
+    def next_apex_height(self) -> float:
         return self._value("apex_height")
 
     @property
-    def apex_speed(self) -> float:
+    def next_apex_speed(self) -> float:
         return self._value("apex_speed")
+
+    apex_height = Renamed("next_apex_height", "a bottom-stage result")
+    apex_speed = Renamed("next_apex_speed", "a bottom-stage result")
 
     @property
     def t_half(self) -> float:
@@ -93,7 +98,8 @@ class BottomResult(SolveStatus):
     def __repr__(self) -> str:
         return (
             f"BottomResult(half={self.half!r}, status={self.status.value}, k_d={self.k_d!r}, "
-            f"apex_height={self.apex_height!r}, apex_speed={self.apex_speed!r}, residual={self.residual:.3g})"
+            f"next_apex_height={self.next_apex_height!r}, next_apex_speed={self.next_apex_speed!r}, "
+            f"residual={self.residual:.3g})"
         )
 
 
@@ -199,7 +205,8 @@ class BottomDeadbeat:
     def plan_batch(self, bottoms, target_height, target_speed, *, k_d=None) -> dict[str, np.ndarray]:
         """:meth:`plan` over bottom states of shape (n, 4) in parallel (targets and starting k_d
         broadcast to n): columns ``status`` (plan codes), ``map_status``, ``k_d``, ``residual`` and
-        the model's outputs (``apex_height``, ``apex_speed``, ``t_half``, ``t_ascent``, ``liftoff_*``)."""
+        the model's outputs (``next_apex_height``, ``next_apex_speed``, ``t_half``, ``t_ascent``,
+        ``liftoff_*``; the former names of the next apex still read, with a DeprecationWarning)."""
         B = np.asarray(bottoms, dtype=float)
         if B.ndim != 2 or B.shape[1] != 4:
             raise ValueError(f"bottoms must have shape (n, 4), got {B.shape}")
@@ -217,6 +224,6 @@ class BottomDeadbeat:
             "k_d": OUT[:, _HEAD["u0"]],
             "residual": OUT[:, _HEAD["residual"]],
         }
-        for j, name in enumerate(self.outputs):
+        for j, name in enumerate(public_names(self.outputs)):
             cols[name] = OUT[:, N_HEAD + j]
-        return cols
+        return RenamedKeys(cols, RENAMED, "a bottom-stage batch")

@@ -35,8 +35,9 @@ as the target allows.
 
 Statuses (:class:`PlanStatus`, a string enum):
 
-* ``REACHED``: the model's next apex is within ``tol`` of the target (scaled: ``tol`` m of height
-  per metre of leg, ``tol`` sqrt(g_f l0) of speed; default 1e-9);
+* ``REACHED``: the model's next apex (``next_apex_height``, ``next_apex_speed``) is within ``tol``
+  of the target (scaled: ``tol`` m of height per metre of leg, ``tol`` sqrt(g_f l0) of speed;
+  default 1e-9);
 * ``UNREACHABLE``: no control within the bounds reaches it; the result holds the closest reachable
   next apex the solve found (its controls, the predicted apex, ``residual`` the scaled distance, and
   the step's energy budget: ``energy_range``, what k_d within its bounds can add or remove at the
@@ -51,6 +52,11 @@ k in [0.5, 2] x ``params.k_c``.
 :class:`Deadbeat` is the controller prepared once (map, parameters, controls, bounds, options);
 :func:`deadbeat` and :func:`deadbeat_batch` build one (cached) per call. Its :meth:`Deadbeat.plan`
 is the fast path a run uses (a few microseconds of Python around the compiled solve).
+
+Names as every result's (``slipmaps.runtime.api.names``): the apex a plan starts from is
+``apex_height``, ``apex_speed`` (a result's ``inputs``, a batch's table columns), the model's next
+apex ``next_apex_height``, ``next_apex_speed``; the former names of the next apex still read, with
+a DeprecationWarning.
 """
 
 from __future__ import annotations
@@ -64,8 +70,10 @@ import numpy as np
 from slipmaps.generated.status import MESSAGES, Status
 
 from ..api.calls import KERNELS, Call
+from ..api.frames import status_columns, to_arrow, to_pandas
 from ..api.index import maps
 from ..api.maps import APEX_INPUTS
+from ..api.names import NEXT, RENAMED, Renamed, public, warn_renamed
 from ..api.numeric import num
 from ..api.params import SlipParams
 from ..api.validate import check_params, leg_angle, non_negative, real, real_array
@@ -176,9 +184,11 @@ class DeadbeatResult(SolveStatus):
     are read from the solver's row when asked for (a run asks for a few of them per step).
 
     ``status`` (:class:`PlanStatus`), ``message``, the controls ``touchdown_angle``, ``k_c``, ``k_d``
-    (equal for a constant-stiffness map), the model's next apex at them ``apex_height``,
-    ``apex_speed`` (``prediction``: every output of the map), ``residual`` (the scaled distance to
-    the target), ``map_status``, the targets (``target_height`` / ``target_speed``, NaN when not a
+    (equal for a constant-stiffness map), the model's next apex at them ``next_apex_height``,
+    ``next_apex_speed`` (``prediction``: every output of the map, by the map's result names),
+    ``inputs`` (the apex it starts from ``apex_height``, ``apex_speed``, the ``ground`` and the
+    ``retraction_rate``), ``params`` (the model's), ``residual`` (the scaled distance to the
+    target), ``map_status``, the targets (``target_height`` / ``target_speed``, NaN when not a
     target), the step's energy ``energy_change`` = E' - E [J] (flight energies above the touchdown
     ground), ``energy_needed`` (of the target, when both are targets), ``energy_range`` (what k_d
     within its bounds makes of energy_change at the chosen angle and k_c), ``at_bounds``, the work
@@ -188,6 +198,7 @@ class DeadbeatResult(SolveStatus):
     __slots__ = ("_ctl", "_out", "_p", "_apex", "_targets", "_angle")
 
     def __init__(self, ctl: Deadbeat, out: np.ndarray, p: np.ndarray, apex, targets, angle: float):
+        # apex: (height, speed, ground, retraction rate) as the plan was asked
         self._ctl, self._out, self._p, self._apex, self._targets = ctl, out, p, apex, targets
         self._angle = angle  # the starting (or, not a control, the fixed) touchdown angle
 
@@ -199,6 +210,18 @@ class DeadbeatResult(SolveStatus):
     @property
     def controls(self) -> tuple[str, ...]:
         return self._ctl.controls
+
+    @property
+    def params(self) -> SlipParams:
+        """The parameters the plan was made with (the model's; its nominal stiffness)."""
+        return self._ctl.params
+
+    @property
+    def inputs(self) -> dict[str, float]:
+        """The step the plan is for, by the apex-return inputs' names: ``apex_height``,
+        ``apex_speed``, ``ground``, ``retraction_rate``."""
+        h, v, gr, rate = self._apex
+        return {"apex_height": h, "apex_speed": v, "ground": gr, "retraction_rate": rate}
 
     @property
     def jacobians(self) -> int:
@@ -246,15 +269,18 @@ class DeadbeatResult(SolveStatus):
     # the prediction
     @property
     def prediction(self) -> dict[str, float]:
-        return dict(zip(self._ctl.outputs, map(float, self._out[N_HEAD:]), strict=True))
+        return dict(zip(self._ctl.public_outputs, map(float, self._out[N_HEAD:]), strict=True))
 
     @property
-    def apex_height(self) -> float:
+    def next_apex_height(self) -> float:
         return float(self._out[N_HEAD + self._ctl._out_h])
 
     @property
-    def apex_speed(self) -> float:
+    def next_apex_speed(self) -> float:
         return float(self._out[N_HEAD + self._ctl._out_v])
+
+    apex_height = Renamed("next_apex_height", "a deadbeat result")
+    apex_speed = Renamed("next_apex_speed", "a deadbeat result")
 
     @property
     def residual(self) -> float:
@@ -270,11 +296,11 @@ class DeadbeatResult(SolveStatus):
 
     @property
     def height_error(self) -> float:
-        return self.apex_height - self.target_height
+        return self.next_apex_height - self.target_height
 
     @property
     def speed_error(self) -> float:
-        return self.apex_speed - self.target_speed
+        return self.next_apex_speed - self.target_speed
 
     @property
     def touchdown_limit(self) -> float:
@@ -282,20 +308,20 @@ class DeadbeatResult(SolveStatus):
         reaches the ground from this apex: acos((apex height - ground) / q_r_td), the touchdown
         condition of report section 2.1 (the apex above ground + q_r_td cos q_th_td); 0 when every
         angle does."""
-        h, _, gr = self._apex
+        h, _, gr, _ = self._apex
         ratio = (h - gr) / self._ctl.params.q_r_td
         return math.acos(ratio) if ratio < 1.0 else 0.0
 
     # the energy
     def _energy_in(self) -> float:
         p = self._ctl.params
-        h, v, gr = self._apex
+        h, v, gr, _ = self._apex
         return p.m * (p.g_f * (h - gr) + 0.5 * v * v)
 
     @property
     def energy_change(self) -> float:
         p = self._ctl.params
-        hn, vn = self.apex_height, self.apex_speed
+        hn, vn = self.next_apex_height, self.next_apex_speed
         return p.m * (p.g_f * hn + 0.5 * vn * vn) - self._energy_in()
 
     @property
@@ -334,8 +360,9 @@ class DeadbeatResult(SolveStatus):
             "touchdown_angle": f(self.touchdown_angle),
             "k_c": f(self.k_c),
             "k_d": f(self.k_d),
-            "apex_height": f(self.apex_height),
-            "apex_speed": f(self.apex_speed),
+            **{k: f(x) for k, x in self.inputs.items()},
+            "next_apex_height": f(self.next_apex_height),
+            "next_apex_speed": f(self.next_apex_speed),
             "target_height": f(self.target_height),
             "target_speed": f(self.target_speed),
             "residual": f(self.residual),
@@ -352,28 +379,47 @@ class DeadbeatResult(SolveStatus):
     def __repr__(self) -> str:
         return (
             f"DeadbeatResult(map={self.map!r}, status={self.status.value}, touchdown_angle="
-            f"{self.touchdown_angle!r}, k_c={self.k_c!r}, k_d={self.k_d!r}, apex_height="
-            f"{self.apex_height!r}, apex_speed={self.apex_speed!r}, residual={self.residual:.3g})"
+            f"{self.touchdown_angle!r}, k_c={self.k_c!r}, k_d={self.k_d!r}, next_apex_height="
+            f"{self.next_apex_height!r}, next_apex_speed={self.next_apex_speed!r}, "
+            f"residual={self.residual:.3g})"
         )
 
 
 class DeadbeatBatch(Mapping):
     """Many deadbeat solves: columns by name in the inputs' broadcast shape (``touchdown_angle``,
-    ``k_c``, ``k_d``, ``apex_height``, ``apex_speed``, ``residual``, ``energy_change``,
-    ``energy_low``, ``energy_high``, ``authority``, ``jacobians``, ``evaluations``, every output of
-    the map as ``next_<name>``), ``status`` (plan codes: 0 REACHED, 1 UNREACHABLE, 2 MAP_FAILED),
-    ``map_status`` (the map's Status codes); ``counts()`` the rows per plan status."""
+    ``k_c``, ``k_d``, ``target_height``, ``target_speed``, ``residual``, ``energy_change``,
+    ``energy_low``, ``energy_high``, ``authority``, ``jacobians``, ``evaluations``, ``iterations``,
+    every output of the map by its result name: the next apex ``next_apex_height``,
+    ``next_apex_speed``, ...), ``status`` (plan codes: 0 REACHED, 1 UNREACHABLE, 2 MAP_FAILED),
+    ``map_status`` (the map's Status codes); ``inputs`` the apex each row starts from
+    (``apex_height``, ``apex_speed``, ``ground``, ``retraction_rate``); ``counts()`` the rows per
+    plan status; ``columns()``, ``to_pandas()``, ``to_arrow()`` a row per solve, the inputs first."""
 
-    def __init__(self, map_name: str, columns: dict[str, np.ndarray], shape: tuple[int, ...]):
+    def __init__(
+        self,
+        map_name: str,
+        columns: dict[str, np.ndarray],
+        shape: tuple[int, ...],
+        inputs: dict[str, np.ndarray] | None = None,
+        former: dict[str, str] | None = None,
+    ):
         self.map = map_name
         self._columns = columns
         self.shape = shape
+        self.inputs = dict(inputs or {})
+        self._former = RENAMED if former is None else former
 
     def __getitem__(self, name: str) -> np.ndarray:
-        try:
+        if name in self._columns:
             return self._columns[name]
-        except KeyError:
-            raise KeyError(f"deadbeat batch has no column {name!r}; it has {', '.join(self)}") from None
+        new = self._former.get(name) if isinstance(name, str) else None
+        if new in self._columns:
+            warn_renamed(name, new, "a deadbeat batch")
+            return self._columns[new]
+        raise KeyError(f"deadbeat batch has no column {name!r}; it has {', '.join(self)}")
+
+    def __contains__(self, name) -> bool:
+        return name in self._columns
 
     def __iter__(self):
         return iter(self._columns)
@@ -394,8 +440,36 @@ class DeadbeatBatch(Mapping):
         order = np.argsort(-counts, kind="stable")
         return {PLAN_STATUS[int(codes[i])].value: int(counts[i]) for i in order}
 
+    def columns(self) -> dict[str, np.ndarray]:
+        """A 1-D column per input and per value, a row per solve (C order of the shape); the plan
+        status by name (``status``) and code (``status_code``), the map's likewise (``map_status``,
+        ``map_status_code``)."""
+        out = {k: np.asarray(v).reshape(-1) for k, v in self.inputs.items()}
+        out |= {k: np.asarray(v).reshape(-1) for k, v in self._columns.items() if k not in _STATUS_COLUMNS}
+        codes = self.status.reshape(-1)
+        out["status"] = np.array([PLAN_STATUS[int(c)].value for c in codes], dtype=object)
+        out["status_code"] = codes
+        return out | status_columns(self._columns["map_status"], "map_status")
+
+    def to_pandas(self):
+        """A pandas DataFrame of :meth:`columns` (pandas is the optional extra ``[pandas]``)."""
+        return to_pandas(self.columns())
+
+    def to_arrow(self):
+        """A pyarrow Table of :meth:`columns`."""
+        return to_arrow(self.columns())
+
     def __repr__(self) -> str:
         return f"DeadbeatBatch(map={self.map!r}, shape={self.shape}, status={self.counts()})"
+
+
+_STATUS_COLUMNS = ("status", "map_status")
+
+
+def former_columns(outputs: tuple[str, ...]) -> dict[str, str]:
+    """A deadbeat batch's former column names -> today's: the next apex (``apex_height`` ...) and
+    the map's ``outputs``, once written ``next_<kernel name>`` (``next_t_stance`` -> ``t_stance``)."""
+    return {NEXT + o: public(o) for o in outputs if NEXT + o != public(o)} | RENAMED
 
 
 def _const_maps() -> tuple[str, str]:
@@ -536,6 +610,7 @@ class Deadbeat:
         apex, jac = call.spec("apex_return"), call.spec("apex_return_jacobian")
         self.solver = compiled.Solver(apex, jac)
         self.outputs = apex.outputs
+        self.public_outputs = apex.public_outputs
         self.wrt = jac.wrt
         self._out_h = self.outputs.index("apex_height")
         self._out_v = self.outputs.index("apex_speed")
@@ -645,7 +720,7 @@ class Deadbeat:
         X = self._inputs(given | {"retraction_rate": rate}, 1)
         T = np.array([[H if tgt[0] else 0.0, V if tgt[1] else 0.0]])
         out = self.solver.run(X, p[None, :], T, self._settings[tgt])[0]
-        return DeadbeatResult(self, out, p, (h, v, gr), (H, V), th)
+        return DeadbeatResult(self, out, p, (h, v, gr, rate), (H, V), th)
 
     def plan_batch(
         self,
@@ -709,10 +784,8 @@ class Deadbeat:
         else:
             out["k_c"] = u.get("k_c", given("k_c"))
             out["k_d"] = u.get("k_d", given("k_d"))
-        for j, name in enumerate(self.outputs):
-            out[f"next_{name}"] = OUT[:, N_HEAD + j]
-        out["apex_height"] = out["next_apex_height"]
-        out["apex_speed"] = out["next_apex_speed"]
+        for j, name in enumerate(self.public_outputs):
+            out[name] = OUT[:, N_HEAD + j]
         out["target_height"] = H if tgt[0] else np.full_like(H, math.nan)
         out["target_speed"] = V if tgt[1] else np.full_like(V, math.nan)
         out["residual"] = OUT[:, _HEAD["residual"]]
@@ -721,12 +794,15 @@ class Deadbeat:
             out[name] = OUT[:, _HEAD[name]].astype(np.int64)
         h, v, gr = cols["apex_height"], cols["apex_speed"], cols["ground"]
         e_in = p.m * (p.g_f * (h - gr) + 0.5 * v * v)
-        hn, vn = out["apex_height"], out["apex_speed"]
+        hn, vn = out["next_apex_height"], out["next_apex_speed"]
         out["energy_change"] = p.m * (p.g_f * hn + 0.5 * vn * vn) - e_in
         out["energy_low"] = OUT[:, _HEAD["energy_low"]] - e_in
         out["energy_high"] = OUT[:, _HEAD["energy_high"]] - e_in
         shaped = {k: np.asarray(x).reshape(shape) for k, x in out.items()}
-        return DeadbeatBatch(self.name, shaped, shape)
+        inputs = {
+            k: cols[k].reshape(shape) for k in ("apex_height", "apex_speed", "ground", "retraction_rate")
+        }
+        return DeadbeatBatch(self.name, shaped, shape, inputs, former_columns(self.outputs))
 
     def warm(self, batch: bool = False) -> Deadbeat:
         """Compile the solver now (numba compiles on the first call; a run warms it before timing
@@ -753,7 +829,8 @@ def message_of(res: DeadbeatResult, bounds: dict) -> str:
     if res.status == PlanStatus.REACHED:
         return f"reached the target (scaled residual {res.residual:.2g})"
     parts = [
-        f"unreachable: the closest next apex found is {res.apex_height:.6g} m, {res.apex_speed:.6g} m/s"
+        f"unreachable: the closest next apex found is {res.next_apex_height:.6g} m, "
+        f"{res.next_apex_speed:.6g} m/s"
         f" (target {_t(res.target_height, 'm')}, {_t(res.target_speed, 'm/s')}; scaled residual "
         f"{res.residual:.3g})"
     ]

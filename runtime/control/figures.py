@@ -165,7 +165,7 @@ def run_figure(run, out_path, *, title: str | None = None):
         a.plot(nxt, run.column(f"nominal_{key}"), "s", mfc="none", color="0.6", label="nominal target")
         a.plot(nxt, run.column(f"target_{key}"), "o", mfc="none", color=_TARGET, ms=8, label="planned target")
         a.plot(nxt, run.column(f"predicted_{key}"), "x", color="0.3", label=f"model ({sc.model})")
-        a.plot(nxt, run.column(f"next_{key}"), ".-", color=_BODY, label=f"plant ({sc.plant})")
+        a.plot(nxt, run.column(f"next_apex_{key}"), ".-", color=_BODY, label=f"plant ({sc.plant})")
         a.plot([0], [run.column(f"apex_{key}")[0]] if len(run) else [], ".", color=_BODY)
         a.set_xlabel("apex (after step)")
         a.set_ylabel(f"{label} [{unit}]")

@@ -154,7 +154,7 @@ def path(run, samples: int = 40) -> Path:
         targets.append((x_apex, G + b.values["target_height"][i, n]))
         ground_prev = G
     if ok[: max(n_steps, 1)].all() and n_steps:
-        apexes.append((x_apex, ground_prev + b.values["next_height"][i, n_steps - 1]))
+        apexes.append((x_apex, ground_prev + b.values["next_apex_height"][i, n_steps - 1]))
     xs = np.concatenate(X) if X else np.zeros(1)
     terrain = _terrain(np.array(feet_x), np.array(feet_y), float(xs.min()), float(xs.max()))
     return Path(

@@ -34,6 +34,7 @@ from slipmaps.generated.status import Status
 from ..api import model
 from ..api.calls import KERNELS, Call
 from ..api.index import halves
+from ..api.names import Renamed
 from ..api.params import SlipParams
 
 __all__ = ["Plant", "PlantSteps", "ascent"]
@@ -58,8 +59,8 @@ class PlantSteps:
     """One step of many runs (arrays of n rows; NaN where the row's ``status`` is not OK):
     ``touchdown``, ``bottom``, ``liftoff`` (n, 4) polar states, times ``t_descent``, ``t_bottom``,
     ``t_stance``, ``t_ascent`` [s], ``foot_x`` (the foot at touchdown relative to the apex),
-    ``step_length`` (apex to apex), the next apex ``apex_height`` (above the touchdown ground),
-    ``apex_speed``, and the stiffness the plant ran with, ``k_c`` and ``k_d``."""
+    ``step_length`` (apex to apex), the next apex ``next_apex_height`` (above the touchdown ground),
+    ``next_apex_speed``, and the stiffness the plant ran with, ``k_c`` and ``k_d``."""
 
     status: np.ndarray
     touchdown: np.ndarray
@@ -70,11 +71,14 @@ class PlantSteps:
     t_stance: np.ndarray
     liftoff: np.ndarray
     t_ascent: np.ndarray
-    apex_height: np.ndarray
-    apex_speed: np.ndarray
+    next_apex_height: np.ndarray
+    next_apex_speed: np.ndarray
     step_length: np.ndarray
     k_c: np.ndarray
     k_d: np.ndarray
+
+    apex_height = Renamed("next_apex_height", "a plant step")
+    apex_speed = Renamed("next_apex_speed", "a plant step")
 
     @property
     def ok(self) -> np.ndarray:
@@ -171,8 +175,8 @@ class Plant:
             t_stance=t_stance,
             liftoff=lo,
             t_ascent=t_ascent,
-            apex_height=apex_h,
-            apex_speed=apex_v,
+            next_apex_height=apex_h,
+            next_apex_speed=apex_v,
             step_length=step_length,
             k_c=kc,
             k_d=kd,
@@ -239,7 +243,15 @@ def _blank(out: PlantSteps) -> PlantSteps:
     """NaN in every value of a row that failed (never a silent number from a failed step)."""
     bad = out.status != 0
     if bad.any():
-        for name in ("t_descent", "foot_x", "t_bottom", "t_stance", "t_ascent", "apex_height", "apex_speed"):
+        for name in (
+            "t_descent",
+            "foot_x",
+            "t_bottom",
+            "t_stance",
+            "t_ascent",
+            "next_apex_height",
+            "next_apex_speed",
+        ):
             getattr(out, name)[bad] = math.nan
         out.step_length[bad] = math.nan
         for name in ("touchdown", "bottom", "liftoff"):

@@ -31,7 +31,9 @@ leg's angle at the apex ``swing_angle`` and at the touchdown ``touchdown_angle``
 leg's angle at :data:`SWING_SAMPLES` evenly spaced times of each descent), the plan status
 (``REACHED``, ``UNREACHABLE``, ``MAP_FAILED``; ``OUT_OF_RANGE`` for a time-based step whose ground
 lies outside its policy's; ``FIXED`` for a fixed-angle run, the self-stable baseline), the plant
-status, the next apex and its error against the planned target, the step length, the controller's
+status, the next apex (``next_apex_height``, ``next_apex_speed``: the names of every result,
+``slipmaps.runtime.api.names``; the former ``next_height``, ``next_speed`` still read, with a
+DeprecationWarning) and its error against the planned target, the step length, the controller's
 solve time (us; the scalar run times :meth:`Deadbeat.plan` itself, a batch the parallel call per
 run, a time-based step its policy per run), and the stance states and times that make the
 continuous path (:meth:`Run.path`, for the figures).
@@ -54,6 +56,7 @@ from slipmaps.generated.status import Status
 
 from ..api.frames import flat_columns, status_columns, to_pandas
 from ..api.index import get
+from ..api.names import RUN_RENAMED, RenamedKeys, warn_renamed
 from ..api.progress import Bar
 from ..api.validate import POLAR_NAMES
 from . import compiled
@@ -91,6 +94,8 @@ PLAN_NAMES = {
     FIXED: "FIXED",
     NOT_RUN: "-",
 }
+#: What a former name's warning says it was read on.
+_WHERE = "a run"
 #: The leg's angle recorded at this many evenly spaced times of each descent (``swing``).
 SWING_SAMPLES = 9
 
@@ -112,8 +117,8 @@ _FIELDS = (
     "predicted_height",
     "predicted_speed",
     "residual",
-    "next_height",
-    "next_speed",
+    "next_apex_height",
+    "next_apex_speed",
     "step_length",
     "solve_us",
     "bottom_us",
@@ -227,16 +232,23 @@ class RunBatch:
         return self.plant_ok.sum(axis=1)
 
     def __getitem__(self, name: str) -> np.ndarray:
+        return self._get(name, 2)
+
+    def _get(self, name: str, stacklevel: int) -> np.ndarray:
         for table in (self.values, self.states, self.codes):
             if name in table:
                 return table[name]
+        if name in RUN_RENAMED:
+            warn_renamed(name, RUN_RENAMED[name], _WHERE, stacklevel + 1)
+            return self.values[RUN_RENAMED[name]]
         raise KeyError(
             f"a run records no {name!r}; it records {', '.join([*self.values, *self.states, *self.codes])}"
         )
 
     def errors(self) -> tuple[np.ndarray, np.ndarray]:
         """Next apex minus the planned target, height [m] and speed [m/s] (NaN where the step failed)."""
-        return self["next_height"] - self["target_height"], self["next_speed"] - self["target_speed"]
+        h, v = self["next_apex_height"], self["next_apex_speed"]
+        return h - self["target_height"], v - self["target_speed"]
 
     def run(self, i: int = 0) -> Run:
         return Run(self, i)
@@ -261,13 +273,14 @@ class Run:
         return int((self.batch.codes["plant_status"][self.index] >= 0).sum())
 
     def column(self, name: str) -> np.ndarray:
-        return self.batch[name][self.index][: len(self)]
+        return self.batch._get(name, 2)[self.index][: len(self)]
 
     @property
     def steps(self) -> list[dict]:
         out = []
         for n in range(len(self)):
             row = {k: float(v[self.index, n]) for k, v in self.batch.values.items()}
+            row = RenamedKeys(row, RUN_RENAMED, _WHERE)
             row |= {k: v[self.index, n].tolist() for k, v in self.batch.states.items()}
             row["plan_status"] = PLAN_NAMES[int(self.batch.codes["plan_status"][self.index, n])]
             row["bottom_status"] = PLAN_NAMES[int(self.batch.codes["bottom_status"][self.index, n])]
@@ -315,13 +328,14 @@ class Run:
         )
         lines = [head, "-" * len(head)]
         for r in self.steps:
-            err_h = 1000.0 * (r["next_height"] - r["target_height"])
-            err_v = 1000.0 * (r["next_speed"] - r["target_speed"])  # absolute: a target of 0 is common
+            err_h = 1000.0 * (r["next_apex_height"] - r["target_height"])
+            err_v = 1000.0 * (r["next_apex_speed"] - r["target_speed"])  # absolute: a target of 0 is common
             plan = r["plan_status"] + ("*" if r["bottom_status"] not in ("-",) else "")
             lines.append(
                 f"{r['step']:4d} {_zero(r['ground']):7.3f} {r['apex_height']:8.4f} {r['apex_speed']:8.4f} "
                 f"{r['target_height']:9.4f} {r['target_speed']:9.4f} {r['touchdown_angle']:8.4f} "
-                f"{r['k_c']:8.0f} {r['k_d']:8.0f} {plan:>11} {r['next_height']:8.4f} {r['next_speed']:8.4f} "
+                f"{r['k_c']:8.0f} {r['k_d']:8.0f} {plan:>11} {r['next_apex_height']:8.4f} "
+                f"{r['next_apex_speed']:8.4f} "
                 f"{err_h:9.3f} {err_v:10.3f} {r['plant_status']:>16} {r['step_length']:7.3f} "
                 f"{r['solve_us'] + (r['bottom_us'] if math.isfinite(r['bottom_us']) else 0.0):6.0f}"
             )
@@ -463,7 +477,7 @@ def run_batch(
     batch = RunBatch(
         sc,
         G,
-        values={k: np.full((R, S), math.nan) for k in _FIELDS},
+        values=RenamedKeys({k: np.full((R, S), math.nan) for k in _FIELDS}, RUN_RENAMED, _WHERE),
         states={k: np.full((R, S, 4), math.nan) for k in _STATES},
         codes={k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES},
         swing=np.full((R, S, SWING_SAMPLES), math.nan),
@@ -487,8 +501,8 @@ def run_batch(
                 _step(ctl, n, idx, live, batch, scalar)
                 ok = codes["plant_status"][idx, n] == int(Status.OK)
                 alive[idx[~ok]] = False
-                live.h[idx] = values["next_height"][idx, n]
-                live.v[idx] = values["next_speed"][idx, n]
+                live.h[idx] = values["next_apex_height"][idx, n]
+                live.v[idx] = values["next_apex_speed"][idx, n]
                 live.ground_prev[idx] = G[idx, n]
                 bar.update(1)
     except KeyboardInterrupt:
@@ -590,7 +604,7 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
         th = np.where(failed, start, res["touchdown_angle"])
         kc = np.where(failed, p.k_c, res["k_c"])
         kd = np.where(failed, p.k_d, res["k_d"])
-        pred_h, pred_v, resid = res["apex_height"], res["apex_speed"], res["residual"]
+        pred_h, pred_v, resid = res["next_apex_height"], res["next_apex_speed"], res["residual"]
         elo, ehi = res["energy_low"], res["energy_high"]
         authority[idx] = np.where(np.isfinite(res["authority"]), res["authority"], authority[idx])
         solve = res["solve_us"]
@@ -643,8 +657,8 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
     values["k_d"][idx, n] = kd_applied
     codes["plant_status"][idx, n] = steps.status
     for name, attr in (
-        ("next_height", "apex_height"),
-        ("next_speed", "apex_speed"),
+        ("next_apex_height", "next_apex_height"),
+        ("next_apex_speed", "next_apex_speed"),
         ("step_length", "step_length"),
         ("t_descent", "t_descent"),
         ("t_bottom", "t_bottom"),
@@ -696,7 +710,7 @@ def _time_based(ctl: _Controller, hm, vm, H, V, gr_model, h_true, gr_true):
     kd = np.where(np.isfinite(td["k_d"]), td["k_d"], sc.params.k_d)
     plan = np.where(tables.counts > 0, td["status"], compiled.MAP_FAILED)
     model = ctl.model_plant.step(hm, vm, th, gr_true, kc, kd)
-    return th, kc, kd, plan, model.apex_height, model.apex_speed, solve, tables
+    return th, kc, kd, plan, model.next_apex_height, model.next_apex_speed, solve, tables
 
 
 def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar, rate=0.0) -> dict[str, np.ndarray]:
@@ -706,12 +720,21 @@ def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar, rate=0.0) -> dict[str,
         b = ctl.plan_batch(hm, vm, H, V, ground=gr, touchdown_angle=start, retraction_rate=rate)
         cols = {
             k: np.asarray(b[k])
-            for k in ("status", "touchdown_angle", "k_c", "k_d", "apex_height", "apex_speed")
+            for k in ("status", "touchdown_angle", "k_c", "k_d", "next_apex_height", "next_apex_speed")
         }
         cols |= {k: np.asarray(b[k]) for k in ("residual", "energy_low", "energy_high", "authority")}
         cols["solve_us"] = np.full(hm.size, math.nan)
         return cols
-    keys = ("touchdown_angle", "k_c", "k_d", "apex_height", "apex_speed", "residual", "authority", "solve_us")
+    keys = (
+        "touchdown_angle",
+        "k_c",
+        "k_d",
+        "next_apex_height",
+        "next_apex_speed",
+        "residual",
+        "authority",
+        "solve_us",
+    )
     out = {k: np.empty(hm.size) for k in (*keys, "energy_low", "energy_high")}
     out["status"] = np.empty(hm.size, dtype=np.int64)
     for i in range(hm.size):

@@ -16,8 +16,8 @@ three-point slopes (:mod:`.swing_tables`; an error of third order in the knot sp
 are held. k_c and k_d are read at the touchdown instant, like the angle.
 
 Per ground (``status``, plan statuses of :class:`~.deadbeat.PlanStatus`): REACHED; UNREACHABLE (the
-table holds the controls of the closest reachable next apex, ``next_height``/``next_speed`` say
-which); MAP_FAILED (the map fails at every control tried: no knot, e.g. a ground too high to reach
+table holds the controls of the closest reachable next apex, ``next_apex_height``/``next_apex_speed``
+say which); MAP_FAILED (the map fails at every control tried: no knot, e.g. a ground too high to reach
 from this apex). A knot whose touchdown time is not later than that of a higher ground is left out
 of the table (``used`` False): a leg's angle is one function of time, so the grounds must touch down
 in order of height. With ``controls=("touchdown_angle",)`` the stiffness is the nominal
@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..api.names import RUN_RENAMED, Renamed
 from ..api.params import SlipParams
 from ..api.validate import real
 from . import compiled, swing_tables
@@ -48,7 +49,8 @@ _TABLE = ("touchdown_angle", "k_c", "k_d")
 class PolicyTables:
     """Policies of many apexes at once (rows), as the runs use them: per row and ground (rows x
     ``n``) the grounds ``grounds``, plan ``status`` codes, touchdown times ``t``, controls
-    ``touchdown_angle``, ``k_c``, ``k_d`` and the model's next apex ``next_height``, ``next_speed``;
+    ``touchdown_angle``, ``k_c``, ``k_d`` and the model's next apex ``next_apex_height``,
+    ``next_apex_speed``;
     ``used`` (the knot is in the table); the tables themselves: ``knots`` (rows x n, the used knots'
     indices into the grounds in increasing time, -1 padded), ``counts`` (rows), and per control the
     knot times ``T`` and values and slopes (``runtime/control/swing_tables.py``)."""
@@ -60,8 +62,8 @@ class PolicyTables:
     touchdown_angle: np.ndarray
     k_c: np.ndarray
     k_d: np.ndarray
-    next_height: np.ndarray
-    next_speed: np.ndarray
+    next_apex_height: np.ndarray
+    next_apex_speed: np.ndarray
     used: np.ndarray
     knots: np.ndarray
     counts: np.ndarray
@@ -190,8 +192,8 @@ def policy_tables(
         touchdown_angle=theta,
         k_c=source["k_c"],
         k_d=source["k_d"],
-        next_height=np.asarray(b["apex_height"]),
-        next_speed=np.asarray(b["apex_speed"]),
+        next_apex_height=np.asarray(b["next_apex_height"]),
+        next_apex_speed=np.asarray(b["next_apex_speed"]),
         used=used,
         knots=knots,
         counts=counts,
@@ -207,10 +209,11 @@ def policy_tables(
 class SwingPolicy:
     """One apex's swing-leg policy (module docstring). Per ground of the table (arrays of ``n``):
     ``grounds``, ``status`` (plan statuses by name), ``t_touchdown``, ``touchdown_angle``, ``k_c``,
-    ``k_d``, ``next_height``, ``next_speed``, ``used``. ``controls_at(t)``: the controls at times
-    after the apex; ``touchdown(ground)``: where a ground is met and with what;
-    ``representation_error()``: what the interpolation adds; ``to_pandas()``, ``as_dict()``,
-    ``plot(path)``."""
+    ``k_d``, ``next_apex_height``, ``next_apex_speed`` (the model's next apex; the former names
+    ``next_height``, ``next_speed`` still read, with a DeprecationWarning), ``used``.
+    ``controls_at(t)``: the controls at times after the apex; ``touchdown(ground)``: where a ground
+    is met and with what; ``representation_error()``: what the interpolation adds;
+    ``to_pandas()``, ``as_dict()``, ``plot(path)``."""
 
     def __init__(self, ctl: Deadbeat, tables: PolicyTables, apex, target):
         self._ctl, self._tables = ctl, tables
@@ -254,12 +257,15 @@ class SwingPolicy:
         return self._tables.k_d[0]
 
     @property
-    def next_height(self) -> np.ndarray:
-        return self._tables.next_height[0]
+    def next_apex_height(self) -> np.ndarray:
+        return self._tables.next_apex_height[0]
 
     @property
-    def next_speed(self) -> np.ndarray:
-        return self._tables.next_speed[0]
+    def next_apex_speed(self) -> np.ndarray:
+        return self._tables.next_apex_speed[0]
+
+    next_height = Renamed(RUN_RENAMED["next_height"], "a swing policy")
+    next_speed = Renamed(RUN_RENAMED["next_speed"], "a swing policy")
 
     @property
     def reached(self) -> np.ndarray:
@@ -308,8 +314,16 @@ class SwingPolicy:
         steps = sim.step(
             self.apex_height, self.apex_speed, td["touchdown_angle"], grounds, td["k_c"], td["k_d"]
         )
-        dh = np.abs(steps.apex_height - self.target_height) if self.target_height is not None else np.zeros(1)
-        dv = np.abs(steps.apex_speed - self.target_speed) if self.target_speed is not None else np.zeros(1)
+        dh = (
+            np.abs(steps.next_apex_height - self.target_height)
+            if self.target_height is not None
+            else np.zeros(1)
+        )
+        dv = (
+            np.abs(steps.next_apex_speed - self.target_speed)
+            if self.target_speed is not None
+            else np.zeros(1)
+        )
         if "touchdown_angle" in self.controls and len(self.controls) == 1:
             dh = np.zeros(1)  # one control: the speed is the target (the height follows)
         return {"height": float(np.max(dh)), "speed": float(np.max(dv)), "samples": int(grounds.size)}
@@ -323,8 +337,8 @@ class SwingPolicy:
             "touchdown_angle": self.touchdown_angle,
             "k_c": self.k_c,
             "k_d": self.k_d,
-            "next_height": self.next_height,
-            "next_speed": self.next_speed,
+            "next_apex_height": self.next_apex_height,
+            "next_apex_speed": self.next_apex_speed,
         }
 
     def to_pandas(self):
