@@ -56,7 +56,8 @@ is the fast path a run uses (a few microseconds of Python around the compiled so
 Names as every result's (``slipmaps.runtime.api.names``): the apex a plan starts from is
 ``apex_height``, ``apex_speed`` (a result's ``inputs``, a batch's table columns), the model's next
 apex ``next_apex_height``, ``next_apex_speed``; the former names of the next apex still read, with
-a DeprecationWarning.
+a DeprecationWarning. :meth:`DeadbeatResult.apply` (:func:`~slipmaps.apply_plan`) steps a map, the
+exact one by default, with a plan's controls.
 """
 
 from __future__ import annotations
@@ -71,13 +72,15 @@ from slipmaps.generated.status import MESSAGES, Status
 
 from ..api.calls import KERNELS, Call
 from ..api.frames import status_columns, to_arrow, to_pandas
-from ..api.index import maps
+from ..api.index import EXACT, maps
 from ..api.maps import APEX_INPUTS
 from ..api.names import NEXT, RENAMED, Renamed, public, warn_renamed
 from ..api.numeric import num
 from ..api.params import SlipParams
+from ..api.results import Result
 from ..api.validate import check_params, leg_angle, non_negative, real, real_array
 from . import compiled
+from .apply import apply_plan
 from .compiled import HEAD_AT as _HEAD
 from .compiled import N_HEAD
 
@@ -192,7 +195,8 @@ class DeadbeatResult(SolveStatus):
     target), the step's energy ``energy_change`` = E' - E [J] (flight energies above the touchdown
     ground), ``energy_needed`` (of the target, when both are targets), ``energy_range`` (what k_d
     within its bounds makes of energy_change at the chosen angle and k_c), ``at_bounds``, the work
-    done (``jacobians``, ``evaluations``, ``iterations``).
+    done (``jacobians``, ``evaluations``, ``iterations``). :meth:`apply` steps a map (the exact
+    one by default) with the plan's controls.
     """
 
     __slots__ = ("_ctl", "_out", "_p", "_apex", "_targets", "_angle")
@@ -345,6 +349,11 @@ class DeadbeatResult(SolveStatus):
     @property
     def message(self) -> str:
         return message_of(self, self._ctl.bounds)
+
+    def apply(self, map: str = EXACT, params: SlipParams | None = None, **options) -> Result:  # noqa: A002
+        """The step of map ``map`` (the exact map by default: the plant) with this plan's controls:
+        :func:`~slipmaps.apply_plan`."""
+        return apply_plan(self, map, params, **options)
 
     def as_dict(self) -> dict:
         """JSON-ready: every value by name (None for NaN), statuses by name."""

@@ -8,14 +8,15 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     params = slipmaps.SlipParams(m=80.0, l0=1.0, k=20_000.0)
     [m.name for m in slipmaps.maps()]                      # "geyer", ..., "exact"
     res = slipmaps.apex_return("geyer", params, 1.0, 5.0, 0.35)
-    res.apex_height, res.apex_speed, res.status
+    res.next_apex_height, res.next_apex_speed, res.status               # the next apex
     batch = slipmaps.apex_return_batch("geyer", params, 1.0, speeds, angles)   # arrays broadcast
-    batch["apex_height"], batch["status"]
+    batch["next_apex_height"], batch["status"], batch.to_pandas()        # inputs, outputs, status
     gaits = slipmaps.fixed_points("exact", params, apex_height=1.0, speed=5.0)  # periodic gaits
     gaits[0].touchdown_angle, gaits[0].eigenvalue, gaits[0].stable
     vs = slipmaps.viability("exact", params, apex_height=heights, touchdown_angle=angles, energy=1900.0)
     plan = slipmaps.deadbeat("iterative", params, 1.0, 5.0, 1.0, 5.2)   # touchdown angle and k_d
     plan.touchdown_angle, plan.k_d, plan.status                          # REACHED
+    plan.apply().next_apex_speed                                         # the plan on the exact map
     policy = slipmaps.swing_policy("iterative", params, 1.3, 5.0, 1.3, 5.0, grounds=(-0.3, 0.3),
                                    controls=("touchdown_angle", "k_d"))  # blind: any ground in range
     trip = slipmaps.run("examples/stairs.toml")                          # steps on the exact plant
@@ -75,6 +76,7 @@ _EXPORTS = {
     "DeadbeatResult": "slipmaps.runtime.control.deadbeat",
     "DeadbeatBatch": "slipmaps.runtime.control.deadbeat",
     "PlanStatus": "slipmaps.runtime.control.deadbeat",
+    "apply_plan": "slipmaps.runtime.control.apply",
     "BottomDeadbeat": "slipmaps.runtime.control.bottom",
     "swing_policy": "slipmaps.runtime.control.swing",
     "SwingPolicy": "slipmaps.runtime.control.swing",
