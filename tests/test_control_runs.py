@@ -346,6 +346,20 @@ def test_the_table_gives_absolute_speed_errors_also_where_the_target_is_a_stop(e
     assert not any("nan" in line.split() for line in rows[2 : 2 + len(r)]), rows
 
 
+def test_a_runs_former_names_of_the_next_apex_read_with_a_warning(example_runs):
+    """``next_height``, ``next_speed`` are ``next_apex_height``, ``next_apex_speed`` (the names of
+    every result: runtime/api/names.py); the former names read, equal, with a DeprecationWarning."""
+    r = example_runs["speed_up"]
+    row = r.steps[0]
+    assert "next_height" not in row and "next_apex_height" in row and "next_height" not in r.to_pandas()
+    with pytest.warns(DeprecationWarning, match="'next_speed' of a run to 'next_apex_speed'"):
+        assert np.array_equal(r.column("next_speed"), r.column("next_apex_speed"))
+    with pytest.warns(DeprecationWarning, match="'next_height' of a run to 'next_apex_height'"):
+        assert row["next_height"] == row["next_apex_height"]
+    with pytest.warns(DeprecationWarning, match="next_height"):
+        assert np.array_equal(r.batch["next_height"], r.batch.values["next_apex_height"], equal_nan=True)
+
+
 def test_a_run_to_pandas_has_a_row_per_step_and_the_states_by_coordinate(example_runs):
     r = example_runs["stairs"]
     df = r.to_pandas()

@@ -49,6 +49,12 @@ def test_the_policy_reaches_the_target_on_every_ground_of_its_table(policy):
     )
 
 
+def test_a_policys_former_names_of_the_next_apex_read_with_a_warning(policy):
+    assert {"next_apex_height", "next_apex_speed"} <= set(policy.to_pandas().columns)
+    with pytest.warns(DeprecationWarning, match="'next_height' of a swing policy to 'next_apex_height'"):
+        assert np.array_equal(policy.next_height, policy.next_apex_height)
+
+
 def test_sec2_1_the_policys_leg_meets_every_ground_at_the_first_root_of_the_foots_height(policy):
     """The touchdown of the interpolated policy (bisection in swing_tables) against brentq on the
     first sign change of the foot's height on a fine grid."""
