@@ -75,7 +75,8 @@ class KernelSpec:
 
     @cached_property
     def public_outputs(self) -> tuple[str, ...]:
-        """The outputs by the API's names (:mod:`.names`: the next apex ``next_apex_height`` ...)."""
+        """The outputs by the API's names (the next apex ``next_apex_height`` ...;
+        ``slipmaps.runtime.api.names``)."""
         return public_names(self.outputs)
 
     @cached_property

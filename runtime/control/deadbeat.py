@@ -222,8 +222,8 @@ class DeadbeatResult(SolveStatus):
 
     @property
     def inputs(self) -> dict[str, float]:
-        """The step the plan is for, by the apex-return inputs' names: ``apex_height``,
-        ``apex_speed``, ``ground``, ``retraction_rate``."""
+        """The step the plan is for (``apex_height``, ``apex_speed``, ``ground``,
+        ``retraction_rate``, the apex-return inputs' names)."""
         h, v, gr, rate = self._apex
         return {"apex_height": h, "apex_speed": v, "ground": gr, "retraction_rate": rate}
 

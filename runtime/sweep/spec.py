@@ -294,7 +294,7 @@ class Sweep:
 
     @property
     def output_names(self) -> tuple[str, ...]:
-        """The batch API's result names, in its order: the output columns."""
+        """The batch API's result names, in its order (the output columns)."""
         return result_columns(self.kind, get(self.map).extras)
 
     @property
