@@ -45,7 +45,7 @@ from slipmaps.generated.status import MESSAGES, Status
 from .calls import Call, Columns
 from .frames import to_arrow, to_pandas
 from .inputs import apex_signature
-from .maps import apex_inputs, apex_rows, given_inputs, state_rows, touchdown_inputs
+from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
 from .params import SlipParams
 from .results import GROUPS, BatchResult, Result, renamed
 from .validate import polar_state
@@ -263,4 +263,4 @@ def apex_return_jacobian_batch(name: str, params: SlipParams, given: dict, **opt
     call = Call.of(name, params, options)
     rows, inputs, shape = apex_rows(given)
     out, status = call.rows("apex_return_jacobian", rows, inputs, math.prod(shape))
-    return _batch(call, "apex_return_jacobian", out, status, shape, given_inputs(given))
+    return _batch(call, "apex_return_jacobian", out, status, shape, given)

@@ -53,7 +53,6 @@ __all__ = [
     "half_stance_batch",
     "apex_inputs",
     "apex_rows",
-    "given_inputs",
     "state_rows",
     "touchdown_inputs",
 ]
@@ -175,13 +174,8 @@ def apex_return_batch(
     rows, inputs, shape = apex_rows(given)
     out, status = call.rows("apex_return", rows, inputs, math.prod(shape), progress)
     names = call.spec("apex_return").public_outputs
-    return BatchResult(call.info.name, "apex_return", names, out, status, shape, given_inputs(given))
-
-
-def given_inputs(given: dict) -> dict[str, object]:
-    """The apex-return inputs as a batch result carries them: by public name, a number as it is,
-    an array as given (``apex_rows`` has checked them; broadcast when read)."""
-    return {k: x if type(x) is float else np.asarray(x, dtype=float) for k, x in given.items()}
+    # the inputs as given, by public name (apex_rows has checked them): broadcast when read
+    return BatchResult(call.info.name, "apex_return", names, out, status, shape, given)
 
 
 def trajectory(

@@ -159,7 +159,8 @@ class BatchResult(Mapping):
         self._index = _column_index(self.names)
         self._data = data  # (n, len(names)), NaN rows where status != 0
         self._status = status
-        self._inputs = dict(inputs or {})  # by public name: a number, or an array broadcasting to shape
+        # by public name, as given (not copied): a number, or an array (or list) broadcasting to shape
+        self._inputs = {} if inputs is None else inputs
 
     @property
     def status(self) -> np.ndarray:
