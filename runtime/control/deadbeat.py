@@ -56,8 +56,16 @@ is the fast path a run uses (a few microseconds of Python around the compiled so
 Names as every result's (``slipmaps.runtime.api.names``): the apex a plan starts from is
 ``apex_height``, ``apex_speed`` (a result's ``inputs``, a batch's table columns), the model's next
 apex ``next_apex_height``, ``next_apex_speed``; the former names of the next apex still read, with
-a DeprecationWarning. :meth:`DeadbeatResult.apply` (:func:`~slipmaps.apply_plan`) steps a map, the
-exact one by default, with a plan's controls.
+a DeprecationWarning.
+
+A plan applied (:func:`apply_plan`, :meth:`DeadbeatResult.apply`): map ``map`` (the exact map by
+default: the plant) steps from the apex the plan is for (its ``inputs``) with the plan's
+``touchdown_angle`` and its ``k_c`` and ``k_d`` as the step's stiffness; the result is that map's
+:func:`slipmaps.apex_return`, whose ``next_apex_height``, ``next_apex_speed`` are where the plan
+lands on it. The parameters are the plan's (the model's) unless ``params`` gives the plant's own (a
+mass mismatch, ...), their stiffness replaced by the plan's. A constant-stiffness map takes a plan
+whose k_c equals its k_d (else the ValueError of its requirement); an UNREACHABLE plan applies its
+closest controls, a MAP_FAILED one has none (ValueError).
 """
 
 from __future__ import annotations
@@ -73,14 +81,13 @@ from slipmaps.generated.status import MESSAGES, Status
 from ..api.calls import KERNELS, Call
 from ..api.frames import status_columns, to_arrow, to_pandas
 from ..api.index import EXACT, maps
-from ..api.maps import APEX_INPUTS
+from ..api.maps import APEX_INPUTS, apex_return
 from ..api.names import NEXT, RENAMED, Renamed, public, warn_renamed
 from ..api.numeric import num
 from ..api.params import SlipParams
 from ..api.results import Result
 from ..api.validate import check_params, leg_angle, non_negative, real, real_array
 from . import compiled
-from .apply import apply_plan
 from .compiled import HEAD_AT as _HEAD
 from .compiled import N_HEAD
 
@@ -97,6 +104,7 @@ __all__ = [
     "SolveStatus",
     "deadbeat",
     "deadbeat_batch",
+    "apply_plan",
     "default_angle",
     "controller",
 ]
@@ -196,7 +204,7 @@ class DeadbeatResult(SolveStatus):
     ground), ``energy_needed`` (of the target, when both are targets), ``energy_range`` (what k_d
     within its bounds makes of energy_change at the chosen angle and k_c), ``at_bounds``, the work
     done (``jacobians``, ``evaluations``, ``iterations``). :meth:`apply` steps a map (the exact
-    one by default) with the plan's controls.
+    one by default) with the plan's controls (module docstring).
     """
 
     __slots__ = ("_ctl", "_out", "_p", "_apex", "_targets", "_angle")
@@ -351,9 +359,19 @@ class DeadbeatResult(SolveStatus):
         return message_of(self, self._ctl.bounds)
 
     def apply(self, map: str = EXACT, params: SlipParams | None = None, **options) -> Result:  # noqa: A002
-        """The step of map ``map`` (the exact map by default: the plant) with this plan's controls:
-        :func:`~slipmaps.apply_plan`."""
-        return apply_plan(self, map, params, **options)
+        """The step of map ``map`` (the exact map by default: the plant) with this plan's controls
+        (:func:`~slipmaps.apply_plan`): ``params`` the plant's parameters (default: the plan's),
+        ``options`` the map's."""
+        if not self.ok:
+            raise ValueError(
+                f"apply_plan: plan has status {self.status} ({self.map_status.name}): the map failed at "
+                "every control the solve tried, so it has no controls to apply"
+            )
+        base = self.params if params is None else params
+        if not isinstance(base, SlipParams):
+            raise TypeError(f"params must be a SlipParams, got {type(base).__name__}")
+        stiffness = base.with_(k_c=self.k_c, k_d=self.k_d)
+        return apex_return(map, stiffness, touchdown_angle=self.touchdown_angle, **self.inputs, **options)
 
     def as_dict(self) -> dict:
         """JSON-ready: every value by name (None for NaN), statuses by name."""
@@ -899,6 +917,22 @@ def controller(name, params, controls=None, bounds=None, options=None) -> Deadbe
     except TypeError:
         return Deadbeat(name, params, controls=controls, bounds=bounds, **options)
     return _prepared(name, params, controls_key, key_bounds, settings, rest)
+
+
+def apply_plan(
+    plan: DeadbeatResult,
+    map: str = EXACT,  # noqa: A002 - the map's name, as every map call's first argument
+    params: SlipParams | None = None,
+    **options,
+) -> Result:
+    """The step of map ``map`` (the exact map by default: the plant) from the apex ``plan`` is for,
+    with its touchdown angle and its k_c and k_d (module docstring): the map's result
+    (:func:`slipmaps.apex_return`). ``params``: the plant's parameters (default: the plan's, the
+    model's), their stiffness replaced by the plan's; ``options``: the map's. ``plan.apply(...)``
+    is the same."""
+    if not isinstance(plan, DeadbeatResult):
+        raise TypeError(f"plan must be a DeadbeatResult (slipmaps.deadbeat), got {type(plan).__name__}")
+    return plan.apply(map, params, **options)
 
 
 def deadbeat(

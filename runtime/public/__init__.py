@@ -76,7 +76,7 @@ _EXPORTS = {
     "DeadbeatResult": "slipmaps.runtime.control.deadbeat",
     "DeadbeatBatch": "slipmaps.runtime.control.deadbeat",
     "PlanStatus": "slipmaps.runtime.control.deadbeat",
-    "apply_plan": "slipmaps.runtime.control.apply",
+    "apply_plan": "slipmaps.runtime.control.deadbeat",
     "BottomDeadbeat": "slipmaps.runtime.control.bottom",
     "swing_policy": "slipmaps.runtime.control.swing",
     "SwingPolicy": "slipmaps.runtime.control.swing",
