@@ -300,8 +300,8 @@ def test_readme_default_case_errors():
         "liftoff_q_rd": -3.26e-2,
         "liftoff_q_th": -4.13e-4,
         "liftoff_q_thd": 6.73e-2,
-        "apex_height": -3.08e-4,
-        "apex_speed": -7.46e-2,
+        "next_apex_height": -3.08e-4,
+        "next_apex_speed": -7.46e-2,
     }
     for name, err in readme.items():
         half_digit = 0.5 * 10.0 ** (math.floor(math.log10(abs(err))) - 2)
