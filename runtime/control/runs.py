@@ -60,7 +60,8 @@ from . import compiled
 from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
 from .planner import plan_targets
-from .plant import Plant
+from .plant import ROBOT, Plant, make_plant
+from .raibert import raibert_controls
 from .scenarios import Scenario, from_dict, load, resized
 from .swing import policy_tables
 
@@ -82,7 +83,7 @@ __all__ = [
 #: place; above it the target becomes a hop in place first.
 V_REVERSE = 0.05
 #: Plan status codes in the records: the solver's, and the two a record adds.
-FIXED, NOT_RUN = -1, -2
+FIXED, NOT_RUN, FEEDBACK = -1, -2, -3
 PLAN_NAMES = {
     0: "REACHED",
     1: "UNREACHABLE",
@@ -90,6 +91,7 @@ PLAN_NAMES = {
     3: "OUT_OF_RANGE",
     FIXED: "FIXED",
     NOT_RUN: "-",
+    FEEDBACK: "FEEDBACK",
 }
 #: The leg's angle recorded at this many evenly spaced times of each descent (``swing``).
 SWING_SAMPLES = 9
@@ -371,15 +373,16 @@ def _noise(sc: Scenario, runs: int, seeds) -> np.ndarray:
 
 class _Controller:
     """The scenario's controller: the apex stage on the model, the bottom stage (two-stage), the
-    planner's settings; the plant with the mismatch."""
+    planner's settings; the plant (a map with the mismatch, or the robot)."""
 
     def __init__(self, sc: Scenario):
         p = sc.params
         self.sc = sc
         self.params = p
         self.fixed = sc.fixed_angle is not None
+        self.raibert = sc.policy == "raibert"
         self.deadbeat = None
-        if not self.fixed:
+        if not (self.fixed or self.raibert):
             self.deadbeat = Deadbeat(
                 sc.model,
                 p,
@@ -396,8 +399,7 @@ class _Controller:
         self.bottom = (
             BottomDeadbeat(sc.decompression, p, bounds=self.k_d_bounds, aim=sc.aim) if sc.two_stage else None
         )
-        plant_params = p.with_(m=p.m * (1.0 + sc.mismatch_mass))
-        self.plant = Plant(sc.plant, plant_params, **sc.plant_options)
+        self.plant = make_plant(sc)
         self.stiff = 1.0 + sc.mismatch_stiffness
         if sc.two_stage and not self.plant.has_halves:
             self.plant._half("touchdown")  # the error naming the plants that have halves
@@ -429,7 +431,8 @@ def check(sc: Scenario) -> None:
     Call.of(
         sc.model, p.with_(k=p.k_c) if "constant_stiffness" in get(sc.model).requires else p, sc.model_options
     )
-    Call.of(sc.plant, p.with_(k=p.k_c), sc.plant_options)
+    if sc.plant != ROBOT:
+        Call.of(sc.plant, p.with_(k=p.k_c), sc.plant_options)
     if sc.two_stage:
         Call.of(sc.decompression, p, {}, half=True)
 
@@ -460,10 +463,12 @@ def run_batch(
     scalar = (R == 1) if scalar is None else scalar
     ctl = _Controller(sc)
     _warm(ctl, scalar)
+    ctl.plant.start(sc, G, seeds)
+    extras = tuple(ctl.plant.columns)
     batch = RunBatch(
         sc,
         G,
-        values={k: np.full((R, S), math.nan) for k in _FIELDS},
+        values={k: np.full((R, S), math.nan) for k in (*_FIELDS, *extras)},
         states={k: np.full((R, S, 4), math.nan) for k in _STATES},
         codes={k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES},
         swing=np.full((R, S, SWING_SAMPLES), math.nan),
@@ -475,6 +480,7 @@ def run_batch(
         angle_prev=np.full(R, math.nan),
         authority=np.full(R, math.nan),
         noise=_noise(sc, R, seeds),
+        integral=np.zeros(R),
     )
     alive = np.ones(R, dtype=bool)
     values, codes = batch.values, batch.codes
@@ -489,7 +495,7 @@ def run_batch(
                 alive[idx[~ok]] = False
                 live.h[idx] = values["next_height"][idx, n]
                 live.v[idx] = values["next_speed"][idx, n]
-                live.ground_prev[idx] = G[idx, n]
+                live.ground_prev[idx] = values["ground"][idx, n]
                 bar.update(1)
     except KeyboardInterrupt:
         raise RunInterrupted(batch) from None
@@ -500,7 +506,7 @@ def run_batch(
 class _Live:
     """The runs between steps (arrays of runs): the true apex, the ground under it, the previous
     step's angle and the energy authority (the solve's warm start), the measurement noise (runs x
-    steps x 2)."""
+    steps x 2), Raibert's height integral."""
 
     h: np.ndarray
     v: np.ndarray
@@ -508,6 +514,30 @@ class _Live:
     angle_prev: np.ndarray
     authority: np.ndarray
     noise: np.ndarray
+    integral: np.ndarray
+
+
+def _correction(sc: Scenario, n: int, idx: np.ndarray, values: dict) -> tuple[np.ndarray, np.ndarray]:
+    """The step-to-step correction of the rows ``idx`` at step ``n`` (``sc.correction`` > 0): the
+    mean prediction residual (next apex minus the model's prediction, height and speed) of the last
+    ``sc.correction`` steps whose touchdown ground differed from the ground under their apex by at
+    most ``sc.correction_gate`` (a terrain change is not a model error); zero without such steps."""
+    m = idx.size
+    if sc.correction == 0 or n == 0:
+        return np.zeros(m), np.zeros(m)
+    lo = max(0, n - sc.correction)
+    past = slice(lo, n)
+    ground = values["ground"][idx, :n]
+    before = np.concatenate([np.zeros((m, 1)), ground[:, :-1]], axis=1)
+    level = np.abs(ground - before)[:, past] <= sc.correction_gate
+    out = []
+    for key in ("height", "speed"):
+        r = values[f"next_{key}"][idx, past] - values[f"predicted_{key}"][idx, past]
+        use = level & np.isfinite(r)
+        count = use.sum(axis=1)
+        total = np.where(use, r, 0.0).sum(axis=1)
+        out.append(np.where(count > 0, total / np.maximum(count, 1), 0.0))
+    return out[0], out[1]
 
 
 def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatch, scalar: bool) -> None:
@@ -531,27 +561,36 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
     near = np.abs(vm) <= V_REVERSE
     V_step = np.where(opposite & ~near, 0.0, Vn)
     v_plan = np.where(opposite & near, 0.0, vm)
+    # the model's loss: the apex speed it plans from is what is left after the step's loss
+    v_model = v_plan * (1.0 - sc.model_loss) if sc.model_loss else v_plan
     H_step = Hn.copy()
     values["apex_height"][idx, n] = h[idx]
     values["apex_speed"][idx, n] = v[idx]
     values["measured_height"][idx, n] = hm
     values["measured_speed"][idx, n] = vm
-    values["ground"][idx, n] = G[idx, n]
     values["nominal_height"][idx, n] = Hn
     values["nominal_speed"][idx, n] = Vn
     t0 = time.perf_counter()
-    if ctl.fixed:
-        th = np.full(m, sc.fixed_angle)
+    tables = None
+    nan = np.full(m, math.nan)
+    if ctl.fixed or ctl.raibert:
         kc = np.full(m, p.k_c)
-        kd = np.full(m, p.k_d)
-        plan = np.full(m, FIXED)
-        pred_h = pred_v = resid = elo = ehi = np.full(m, math.nan)
-        solve = np.zeros(m)
+        if ctl.fixed:
+            th, kd, plan = np.full(m, sc.fixed_angle), np.full(m, p.k_d), np.full(m, FIXED)
+        else:
+            t_last = values["t_stance"][idx, n - 1] if n else nan
+            th, kd = raibert_controls(
+                sc.raibert, p, hm, vm, H_step, V_step, t_last, live.integral[idx], ctl.k_d_bounds
+            )
+            live.integral[idx] += (H_step - hm) / p.l0
+            plan = np.full(m, FEEDBACK)
+        pred_h = pred_v = resid = elo = ehi = nan
+        solve = np.zeros(m) if ctl.fixed else np.full(m, (time.perf_counter() - t0) * 1e6 / m)
     else:
-        start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], default_angle(p, v_plan))
+        start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], default_angle(p, v_model))
         if sc.known >= 1:
             if ctl.energy and not np.isfinite(authority[idx]).all():
-                pre = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar)
+                pre = _plan(ctl.deadbeat, hm, v_model, H_step, V_step, gr_model, start, scalar)
                 authority[idx] = np.where(np.isfinite(authority[idx]), authority[idx], pre["authority"])
             cols = [min(n + k, S - 1) for k in range(sc.known)]
             future = G[idx][:, cols] - ground_prev[idx][:, None]
@@ -561,27 +600,37 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
 
             def planned(rows, auth):
                 kw = {"mass": p.m, "g": p.g_f, "l0": p.l0, "min_height": sc.floor}
-                args = (hm[rows], v_plan[rows], future[rows], Hf[rows], Vf[rows], auth, p.k_c, ctl.k_d_bounds)
+                args = (
+                    hm[rows],
+                    v_model[rows],
+                    future[rows],
+                    Hf[rows],
+                    Vf[rows],
+                    auth,
+                    p.k_c,
+                    ctl.k_d_bounds,
+                )
                 return plan_targets(*args, **kw)
 
             every = np.arange(m)
             H_step, V_step = planned(every, authority[idx] if ctl.energy else np.full(m, math.nan))
+        dh, dv = _correction(sc, n, idx, values)
+        H_aim, V_aim = H_step - dh, V_step - dv
         if ctl.policy is not None:
-            th, kc, kd, plan, pred_h, pred_v, solve, tables = _time_based(
-                ctl, hm, v_plan, H_step, V_step, gr_model, h[idx], gr_true
-            )
-            resid = elo = ehi = np.full(m, math.nan)
+            tables, solve = _time_based_tables(ctl, hm, v_model, H_aim, V_aim, gr_model)
+            th, kc, kd = default_angle(p, v_model), np.full(m, p.k_c), np.full(m, p.k_d)  # no table value
+            resid = elo = ehi = nan
         else:
-            res = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar, ctl.rate)
-    if not ctl.fixed and ctl.policy is None:
+            res = _plan(ctl.deadbeat, hm, v_model, H_aim, V_aim, gr_model, start, scalar, ctl.rate)
+    if ctl.deadbeat is not None and ctl.policy is None:
         if sc.known >= 1 and ctl.energy:
             # the authority changes with the angle: where the plan fell short, plan once more with
             # the authority of this solve
             again = np.flatnonzero((res["status"] == compiled.UNREACHABLE) & np.isfinite(res["authority"]))
             if again.size:
                 H2, V2 = planned(again, res["authority"][again])
-                args = (hm[again], v_plan[again], H2, V2, gr_model[again], res["touchdown_angle"][again])
-                res2 = _plan(ctl.deadbeat, *args, scalar, ctl.rate)
+                args = (hm[again], v_model[again], H2 - dh[again], V2 - dv[again], gr_model[again])
+                res2 = _plan(ctl.deadbeat, *args, res["touchdown_angle"][again], scalar, ctl.rate)
                 H_step[again], V_step[again] = H2, V2
                 for k in res:
                     res[k][again] = res[k][again] + res2[k] if k == "solve_us" else res2[k]
@@ -590,29 +639,22 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
         th = np.where(failed, start, res["touchdown_angle"])
         kc = np.where(failed, p.k_c, res["k_c"])
         kd = np.where(failed, p.k_d, res["k_d"])
-        pred_h, pred_v, resid = res["apex_height"], res["apex_speed"], res["residual"]
+        pred_h, pred_v, resid = res["apex_height"] + dh, res["apex_speed"] + dv, res["residual"]
         elo, ehi = res["energy_low"], res["energy_high"]
         authority[idx] = np.where(np.isfinite(res["authority"]), res["authority"], authority[idx])
         solve = res["solve_us"]
-    if not scalar and not ctl.fixed and ctl.policy is None:
-        solve = np.full(m, (time.perf_counter() - t0) * 1e6 / m)
+        if not scalar:
+            solve = np.full(m, (time.perf_counter() - t0) * 1e6 / m)
     values["target_height"][idx, n] = H_step
     values["target_speed"][idx, n] = V_step
-    values["swing_angle"][idx, n] = th if ctl.policy is None else _swing_at(tables, np.zeros(m))
-    values["k_c"][idx, n] = kc
-    values["k_d_planned"][idx, n] = kd
-    values["predicted_height"][idx, n] = pred_h
-    values["predicted_speed"][idx, n] = pred_v
-    values["residual"][idx, n] = resid
-    values["energy_low"][idx, n] = elo
-    values["energy_high"][idx, n] = ehi
     values["solve_us"][idx, n] = solve
-    codes["plan_status"][idx, n] = plan
     f = ctl.stiff
+    leg = {"swing": tables, "scale": f, "rows": idx}
     if ctl.bottom is not None:
-        first = ctl.plant.compress(h[idx], v[idx], th, gr_true, kc * f, ctl.rate)
-        bottoms = first[5]
-        ok = first[0] == 0
+        first = ctl.plant.compress(h[idx], v[idx], th, gr_true, kc * f, ctl.rate, **leg)
+        if tables is not None:
+            kd = _read_tables(tables, h[idx], first.ground, p)["k_d"]
+        ok = first.ok
         t1 = time.perf_counter()
         kd_b = kd.copy()
         bstat = np.full(m, NOT_RUN)
@@ -620,7 +662,7 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
             rows = np.flatnonzero(ok)
             if scalar:
                 for i in rows:
-                    b = ctl.bottom.plan(bottoms[i], H_step[i], V_step[i], k_d=kd[i])
+                    b = ctl.bottom.plan(first.bottom[i], H_step[i], V_step[i], k_d=kd[i])
                     bstat[i] = (
                         compiled.MAP_FAILED
                         if b.status == PlanStatus.MAP_FAILED
@@ -629,18 +671,37 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
                     if b.status != PlanStatus.MAP_FAILED:
                         kd_b[i] = b.k_d
             else:
-                out = ctl.bottom.plan_batch(bottoms[rows], H_step[rows], V_step[rows], k_d=kd[rows])
+                out = ctl.bottom.plan_batch(first.bottom[rows], H_step[rows], V_step[rows], k_d=kd[rows])
                 bstat[rows] = out["status"]
                 good = out["status"] != compiled.MAP_FAILED
                 kd_b[rows[good]] = out["k_d"][good]
         values["bottom_us"][idx, n] = (time.perf_counter() - t1) * 1e6 / max(int(ok.sum()), 1)
         codes["bottom_status"][idx, n] = bstat
-        steps = ctl.plant.decompress(first, kc * f, kd_b * f)
-        kd_applied = kd_b
+        steps = ctl.plant.decompress(first, kd_b * f, rows=idx)
     else:
-        steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f, ctl.rate)
-        kd_applied = kd
-    values["k_d"][idx, n] = kd_applied
+        steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f, ctl.rate, **leg)
+        kd_b = None
+    met = steps.ground
+    values["ground"][idx, n] = np.where(met == gr_true, G[idx, n], ground_prev[idx] + met)
+    if tables is not None:
+        # the time-based policy: the controls its tables gave where the leg met the ground, the
+        # plan's status there, and the model's prediction at those controls from the measured apex
+        td = _read_tables(tables, h[idx], met, p)
+        th = np.where(np.isfinite(td["touchdown_angle"]), td["touchdown_angle"], th)
+        kc, kd = td["k_c"], td["k_d"]
+        plan = np.where(tables.counts > 0, td["status"], compiled.MAP_FAILED)
+        model = ctl.model_plant.step(hm, v_model, th, np.where(np.isfinite(met), met, gr_true), kc, kd)
+        pred_h, pred_v = model.apex_height, model.apex_speed
+    values["swing_angle"][idx, n] = th if tables is None else _swing_at(tables, np.zeros(m))
+    values["k_c"][idx, n] = kc
+    values["k_d_planned"][idx, n] = kd
+    values["predicted_height"][idx, n] = pred_h
+    values["predicted_speed"][idx, n] = pred_v
+    values["residual"][idx, n] = resid
+    values["energy_low"][idx, n] = elo
+    values["energy_high"][idx, n] = ehi
+    codes["plan_status"][idx, n] = plan
+    values["k_d"][idx, n] = kd if kd_b is None else kd_b
     codes["plant_status"][idx, n] = steps.status
     for name, attr in (
         ("next_height", "apex_height"),
@@ -653,6 +714,8 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
         ("foot_x", "foot_x"),
     ):
         values[name][idx, n] = getattr(steps, attr)
+    for name, column in steps.extras.items():
+        values[name][idx, n] = column
     for name in _STATES:
         states[name][idx, n] = getattr(steps, name)
     # the leg's angle: at the touchdown (the plant's), and over the descent
@@ -660,7 +723,7 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
     values["touchdown_angle"][idx, n] = np.where(np.isfinite(td_angle), td_angle, th)
     frac = np.linspace(0.0, 1.0, SWING_SAMPLES)
     times = steps.t_descent[:, None] * frac[None, :]
-    if ctl.policy is None:
+    if tables is None:
         swing[idx, n] = th[:, None] + ctl.rate * times
     else:
         for k in range(SWING_SAMPLES):
@@ -674,10 +737,18 @@ def _swing_at(tables, t) -> np.ndarray:
     return tables.controls_at(t)["touchdown_angle"]
 
 
-def _time_based(ctl: _Controller, hm, vm, H, V, gr_model, h_true, gr_true):
-    """A time-based step of every row: the policies at the measured apex over the grounds around
-    the expected one (:mod:`.swing`), read where the leg meets the true ground from the true apex;
-    the model's prediction at those controls and that ground from the measured apex."""
+def _read_tables(tables, h_true, ground, p) -> dict:
+    """The time-based policies' controls where the leg from the true apex meets ``ground`` (the
+    nominal stiffness where a table has none), and the plan status there."""
+    td = tables.touchdown(h_true, np.where(np.isfinite(ground), ground, 0.0))
+    td["k_c"] = np.where(np.isfinite(td["k_c"]), td["k_c"], p.k_c)
+    td["k_d"] = np.where(np.isfinite(td["k_d"]), td["k_d"], p.k_d)
+    return td
+
+
+def _time_based_tables(ctl: _Controller, hm, vm, H, V, gr_model):
+    """A time-based step's policies, one per row: at the measured apex over the grounds around the
+    expected one (:mod:`.swing`), and the time they took per row [us]."""
     sc = ctl.sc
     t0 = time.perf_counter()
     targeted = ctl.policy._targeted(None if sc.aim == "speed" else H, None if sc.aim == "height" else V)
@@ -689,14 +760,7 @@ def _time_based(ctl: _Controller, hm, vm, H, V, gr_model, h_true, gr_true):
         V if targeted[1] else None,
         gr_model[:, None] + ctl.grid[None, :],
     )
-    solve = np.full(hm.size, (time.perf_counter() - t0) * 1e6 / hm.size)
-    td = tables.touchdown(h_true, gr_true)
-    th = np.where(np.isfinite(td["touchdown_angle"]), td["touchdown_angle"], default_angle(sc.params, vm))
-    kc = np.where(np.isfinite(td["k_c"]), td["k_c"], sc.params.k_c)
-    kd = np.where(np.isfinite(td["k_d"]), td["k_d"], sc.params.k_d)
-    plan = np.where(tables.counts > 0, td["status"], compiled.MAP_FAILED)
-    model = ctl.model_plant.step(hm, vm, th, gr_true, kc, kd)
-    return th, kc, kd, plan, model.apex_height, model.apex_speed, solve, tables
+    return tables, np.full(hm.size, (time.perf_counter() - t0) * 1e6 / hm.size)
 
 
 def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar, rate=0.0) -> dict[str, np.ndarray]:

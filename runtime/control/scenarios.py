@@ -51,7 +51,8 @@ reference (docs/scenarios.md, from :mod:`.scenario_keys`).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import asdict, dataclass, field, fields, replace
+from dataclasses import fields as dataclass_fields
 from pathlib import Path
 
 import numpy as np
@@ -60,6 +61,8 @@ from ..api.files import read_toml
 from ..api.index import get, get_half
 from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipParams
 from .deadbeat import CONTROLS
+from .plant import ROBOT
+from .raibert import RaibertGains
 
 __all__ = ["Scenario", "from_dict", "load", "load_scenario", "read_toml", "resized", "KEYS"]
 
@@ -98,6 +101,10 @@ KEYS = {
         "retraction_rate",
         "grounds",
         "knots",
+        "raibert",
+        "correction",
+        "correction_gate",
+        "model_loss",
     ),
     "mismatch": ("mass", "stiffness"),
     "noise": ("height", "speed", "seed"),
@@ -105,7 +112,7 @@ KEYS = {
 }
 TERRAINS = ("flat", "steps", "stairs", "random")
 #: The swing-leg policies (module docstring).
-POLICIES = ("apex", "retraction", "time-based")
+POLICIES = ("apex", "retraction", "time-based", "raibert")
 
 
 @dataclass(frozen=True)
@@ -144,6 +151,10 @@ class Scenario:
     retraction_rate: float = 0.0  # rad/s after the apex (policy retraction, or with fixed_angle)
     grounds: tuple[float, float] | None = None  # time-based: the grounds [m] of the policy (default +-0.3 l0)
     knots: int = 64  # time-based: the grounds of the policy's table
+    raibert: RaibertGains = RaibertGains()  # policy raibert: its gains
+    correction: int = 0  # the last hops whose prediction residuals shift the target (0: none)
+    correction_gate: float = 0.01  # m: a hop whose ground changed by more is not averaged
+    model_loss: float = 0.0  # the model's loss: the fraction of the apex speed lost per step
     mismatch_mass: float = 0.0  # the plant's mass is (1 + this) times the controller's
     mismatch_stiffness: float = 0.0  # the plant's springs are (1 + this) times what is commanded
     noise_height: float = 0.0  # standard deviation of the apex height measurement [m]
@@ -152,6 +163,7 @@ class Scenario:
 
     def __post_init__(self):
         _check_policy(self)
+        _check_plant(self)
         n = self.steps
         for name in ("target_height", "target_speed", "ground"):
             value = getattr(self, name)
@@ -187,6 +199,7 @@ class Scenario:
         for f in fields(self):
             value = getattr(self, f.name)
             out[f.name] = value.as_dict() if isinstance(value, SlipParams) else value
+        out["raibert"] = asdict(self.raibert)
         out["target_height"] = list(self.target_height)
         out["target_speed"] = list(self.target_speed)
         out["ground"] = list(self.ground)
@@ -208,8 +221,26 @@ def _check_policy(sc: Scenario) -> None:
             f"{where}: retraction_rate is the rate of policy 'retraction' (or of a fixed_angle run); "
             f"policy is {sc.policy!r}"
         )
-    if sc.policy == "time-based" and sc.fixed_angle is not None:
-        raise ValueError(f"{where}: a time-based policy is a controller: it cannot go with fixed_angle")
+    if sc.policy in ("time-based", "raibert") and sc.fixed_angle is not None:
+        raise ValueError(f"{where}: policy {sc.policy!r} is a controller: it cannot go with fixed_angle")
+    if isinstance(sc.raibert, dict):
+        object.__setattr__(sc, "raibert", RaibertGains(**sc.raibert))
+    if not isinstance(sc.raibert, RaibertGains):
+        raise ValueError(f"{where}: raibert must be RaibertGains or a dict of its gains, got {sc.raibert!r}")
+    c = sc.correction
+    if isinstance(c, bool) or not isinstance(c, int) or c < 0:
+        raise ValueError(f"{where}: correction must be a whole number of hops >= 0, got {c!r}")
+    gate = sc.correction_gate
+    if (
+        isinstance(gate, bool)
+        or not isinstance(gate, (int, float))
+        or not gate > 0
+        or not math.isfinite(gate)
+    ):
+        raise ValueError(f"{where}: correction_gate must be a positive number [m], got {gate!r}")
+    loss = sc.model_loss
+    if isinstance(loss, bool) or not isinstance(loss, (int, float)) or not 0.0 <= loss < 1.0:
+        raise ValueError(f"{where}: model_loss must be a fraction in [0, 1), got {loss!r}")
     if isinstance(sc.knots, bool) or not isinstance(sc.knots, int) or sc.knots < 2:
         raise ValueError(f"{where}: knots must be an integer >= 2, got {sc.knots!r}")
     if sc.grounds is not None:
@@ -219,6 +250,29 @@ def _check_policy(sc: Scenario) -> None:
             raise ValueError(f"{where}: grounds must be a pair (low, high) [m], got {sc.grounds!r}") from None
         if not (math.isfinite(low) and math.isfinite(high) and low < high):
             raise ValueError(f"{where}: grounds must be finite with low < high, got {sc.grounds!r}")
+
+
+def _check_plant(sc: Scenario) -> None:
+    """ValueError (one line) for a plant that is neither a map nor the robot, or a robot scenario
+    with a model mismatch (the robot's parameters are its own); the controller's parameters of a
+    robot scenario that gives none: the robot's nominal SLIP."""
+    where = f"scenario {sc.name!r}"
+    if sc.plant != ROBOT:
+        try:
+            get(sc.plant)
+        except ValueError as exc:
+            raise ValueError(f"{where}: plant: {exc}; or {ROBOT!r}, the MuJoCo robot") from None
+        return
+    for key in ("mismatch_mass", "mismatch_stiffness"):
+        if getattr(sc, key) != 0.0:
+            raise ValueError(
+                f"{where}: {key} is for a map plant; the robot's masses and springs are its own "
+                "(its plant options)"
+            )
+    if sc.params is HUMAN_RUNNER:  # not given: the model is the robot's nominal SLIP
+        from ..robot.settings import robot_settings
+
+        object.__setattr__(sc, "params", robot_settings(sc.plant_options).params.slip_params())
 
 
 class _Keys:
@@ -346,6 +400,45 @@ def _terrain(keys: _Keys, steps: int) -> tuple[tuple[float, ...], int]:
     return tuple(float(x) for x in np.cumsum(changes)), known
 
 
+def _plant(top: _Keys) -> tuple[str, dict]:
+    """The plant and its options: ``plant = "NAME"`` with ``[plant_options]``, or a table ``[plant]``
+    of ``kind`` and the options (a map's, or the robot's: ``slipmaps.runtime.robot``)."""
+    raw = top.data.get("plant", "exact")
+    options = top.data.get("plant_options", {})
+    if not isinstance(options, dict):
+        top.fail("plant_options", f"must be a table of the plant's options, got {options!r}")
+    if isinstance(raw, dict):
+        if "plant_options" in top.data:
+            top.fail("plant_options", "give the options in the [plant] table (beside kind), not both")
+        table = top.table("plant")
+        kind = table.text("kind")
+        if kind is None:
+            table.fail("kind", f"the plant's kind: a map name or {ROBOT!r}")
+        options = {k: v for k, v in raw.items() if k != "kind"}
+    else:
+        kind = top.text("plant", "exact")
+    if kind != ROBOT:
+        try:
+            get(kind)
+        except ValueError as exc:
+            top.fail("plant", f"{exc}; or {ROBOT!r}, the MuJoCo robot")
+    else:
+        from ..robot.settings import robot_settings
+
+        try:
+            robot_settings(options)
+        except ValueError as exc:
+            top.fail("plant", str(exc))
+    return kind, dict(options)
+
+
+def _loss(keys: _Keys) -> float:
+    x = keys.number("model_loss", 0.0, non_negative=True)
+    if x >= 1.0:
+        keys.fail("model_loss", f"a fraction of the apex speed in [0, 1), got {x!r}")
+    return x
+
+
 def _fraction(keys: _Keys, key: str) -> float:
     x = keys.number(key, 0.0)
     if x <= -1.0:
@@ -379,12 +472,11 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
     noise = top.table("noise")
     name = top.text("name", Path(where).stem if where != "scenario" else "run")
     model = top.text("model", "iterative")
-    plant = top.text("plant", "exact")
-    for key, value in (("model", model), ("plant", plant)):
-        try:
-            get(value)
-        except ValueError as exc:
-            top.fail(key, str(exc))
+    try:
+        get(model)
+    except ValueError as exc:
+        top.fail("model", str(exc))
+    plant, plant_options = _plant(top)
     controls = control.data.get("controls")
     if isinstance(controls, str):
         controls = [controls]
@@ -417,9 +509,8 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
     fixed = control.number("fixed_angle")
     if fixed is not None and abs(fixed) >= 0.5 * math.pi:
         control.fail("fixed_angle", f"must satisfy |angle| < pi/2, got {fixed!r}")
-    for key in ("model_options", "plant_options"):
-        if not isinstance(data.get(key, {}), dict):
-            top.fail(key, f"must be a table of the map's options, got {data[key]!r}")
+    if not isinstance(data.get("model_options", {}), dict):
+        top.fail("model_options", f"must be a table of the map's options, got {data['model_options']!r}")
     policy = control.text("policy", "apex")
     if policy not in POLICIES:
         control.fail("policy", f"must be one of {', '.join(POLICIES)}, got {policy!r}")
@@ -429,8 +520,13 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
             "retraction_rate",
             f"is the rate of policy 'retraction' (or of a fixed_angle run); policy is {policy!r}",
         )
-    if policy == "time-based" and fixed is not None:
-        control.fail("policy", "a time-based policy is a controller: it cannot go with fixed_angle")
+    if policy in ("time-based", "raibert") and fixed is not None:
+        control.fail("policy", f"policy {policy!r} is a controller: it cannot go with fixed_angle")
+    gains = control.table("raibert")
+    unknown = sorted(set(gains.data) - {f.name for f in dataclass_fields(RaibertGains)})
+    if unknown:
+        gains.fail(unknown[0], "is not a gain of Raibert's controller (k_v, k_h, k_i)")
+    raibert = RaibertGains(**{k: gains.number(k, non_negative=True) for k in gains.data})
     grounds = control.data.get("grounds")
     if grounds is not None:
         if not (isinstance(grounds, list) and len(grounds) == 2):
@@ -452,7 +548,7 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
         model=model,
         model_options=dict(data.get("model_options", {})),
         plant=plant,
-        plant_options=dict(data.get("plant_options", {})),
+        plant_options=plant_options,
         params=params,
         controls=None if controls is None else tuple(controls),
         bounds=bounds,
@@ -467,6 +563,10 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
         retraction_rate=rate,
         grounds=grounds,
         knots=knots,
+        raibert=raibert,
+        correction=control.integer("correction", 0),
+        correction_gate=control.number("correction_gate", 0.01, positive=True),
+        model_loss=_loss(control),
         mismatch_mass=_fraction(mismatch, "mass"),
         mismatch_stiffness=_fraction(mismatch, "stiffness"),
         noise_height=noise.number("height", 0.0, non_negative=True),
