@@ -27,7 +27,7 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "model",
     ),
     ("", "plant"): (
-        "map name, \"mujoco\" or table",
+        'map name, "mujoco" or table',
         '"exact"',
         "",
         "the plant the run happens on: any map, or `mujoco` (the MuJoCo robot: docs/robot.md); as a "
