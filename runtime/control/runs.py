@@ -210,6 +210,7 @@ class RunBatch:
     states: dict[str, np.ndarray]
     codes: dict[str, np.ndarray]
     swing: np.ndarray | None = None
+    plant: object = None
 
     @property
     def runs(self) -> int:
@@ -472,6 +473,7 @@ def run_batch(
         states={k: np.full((R, S, 4), math.nan) for k in _STATES},
         codes={k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES},
         swing=np.full((R, S, SWING_SAMPLES), math.nan),
+        plant=ctl.plant,
     )
     live = _Live(
         h=np.full(R, sc.start_height),
