@@ -202,7 +202,8 @@ class RunBatch:
     """Many runs of one scenario (arrays runs x steps, NaN where a step did not run; module
     docstring). ``fell`` (runs,): a plant step failed; ``completed``: steps run; ``grounds``: the
     terrain of each run; ``swing`` (runs x steps x ``SWING_SAMPLES``): the leg's angle over each
-    descent."""
+    descent; ``plant``: the plant the runs ran on (the robot plant keeps its robots and their
+    logged trajectories)."""
 
     scenario: Scenario
     grounds: np.ndarray
