@@ -18,7 +18,7 @@ import slipmaps  # noqa: E402
 from scipy.optimize import fsolve  # noqa: E402
 from slipmaps.generated.status import Status  # noqa: E402
 from slipmaps.runtime.robot.hopper import Hopper  # noqa: E402
-from slipmaps.runtime.robot.model import THIGH_GYRATION, build  # noqa: E402
+from slipmaps.runtime.robot.model import build  # noqa: E402
 from slipmaps.runtime.robot.params import RobotParams, RobotParamsError  # noqa: E402
 from slipmaps.runtime.robot.swing import hold, ramp, table  # noqa: E402
 from slipmaps.runtime.robot.terrain import Terrain  # noqa: E402
@@ -29,17 +29,11 @@ P = RobotParams()
 GAIT = {3.0: 0.1826716134074924, 4.0: 0.22774888061184945, 5.0: 0.26672803415706936}
 
 
-def leg_inertia(p: RobotParams) -> float:
-    """The swinging leg's inertia about the hip [kg m^2] (thigh, foot on its arm, foot sphere)."""
-    arm = p.l0 - p.foot_radius
-    return p.thigh_mass * THIGH_GYRATION**2 + p.foot_mass * arm**2 + 0.4 * p.foot_mass * p.foot_radius**2
-
-
 def tiny_foot(**changes) -> RobotParams:
     """A 20 g foot of 5 mm radius on 1 ms contacts, the hip servo scaled to its small inertia (the
     discrete servo needs hip_kd * control_period / inertia well below 2)."""
-    p = P.with_(foot_mass=0.02, foot_radius=0.005, contact_time=0.001)
-    s = leg_inertia(p) / leg_inertia(P)
+    p = P.with_(foot_mass=0.02, foot_radius=0.005, contact_time=0.001, hip_kp=1.0, hip_kd=0.0)
+    s = p.leg_inertia / P.leg_inertia
     return p.with_(
         hip_kp=P.hip_kp * s, hip_kd=P.hip_kd * s, hip_torque_limit=P.hip_torque_limit * s, **changes
     )
@@ -83,6 +77,16 @@ def test_bad_relations_name_the_field_and_the_bound():
     )
     assert any(ln.startswith("RobotParams.contact_time [s] must be >= 2 timestep = 0.004") for ln in lines)
     assert any(ln.startswith("RobotParams.retraction [m] must be < stroke = 0.3") for ln in lines)
+
+
+def test_hip_servo_gains_within_the_discrete_limit():
+    """A 20 g foot leaves the default servo (kd T / I = 2.7) unstable: measured, it swung the leg off."""
+    with pytest.raises(RobotParamsError) as e:
+        RobotParams(foot_mass=0.02, foot_radius=0.005)
+    (line,) = str(e.value).splitlines()
+    assert line.startswith("RobotParams.hip_kd [N m s/rad] must be <= leg inertia / control_period = 22.")
+    assert line.endswith("got 60.0")
+    assert P.hip_kd * P.control_period / P.leg_inertia < 0.11  # the default: 0.10
 
 
 def test_slip_params_carry_body_and_thigh():
@@ -175,7 +179,7 @@ def test_losses_are_the_foots():
             impact = 0.5 * P.foot_mass * (q_rd**2 + (q_r * q_thd) ** 2)
             assert 1.05 < hop.loss_touchdown / impact < 1.3  # measured 1.12, 1.19, 1.21
             _, q_rd, _, q_thd = hop.liftoff
-            caught = 0.5 * mu * q_rd**2 + 0.5 * leg_inertia(P) * q_thd**2
+            caught = 0.5 * mu * q_rd**2 + 0.5 * P.leg_inertia * q_thd**2
             assert 0.9 < hop.loss_liftoff / caught < 1.05  # measured 0.95-0.99
             assert hop.energy_end == pytest.approx(
                 hop.energy_start - hop.loss_touchdown + hop.switch_work - hop.loss_liftoff, abs=1e-9

@@ -91,7 +91,10 @@ class Sensors:
     ``x``, ``z`` [m] and rates ``xd``, ``zd`` [m/s]; the body's ``pitch`` [rad] and ``pitch_rate``
     [rad/s] (0 when locked); the leg's length ``leg_length`` [m] (hip to sole) and ``leg_rate``
     [m/s]; the ``hip_angle`` [rad] (the leg against the body) and ``hip_rate`` [rad/s]; ``contact``
-    (the foot switch: no noise, the same latency)."""
+    (the foot switch: no noise, the same latency). Noise (standard deviations, RobotParams):
+    ``noise_position`` on x and z, ``noise_velocity`` on xd, zd and the leg's rate (and divided by
+    l0 on the pitch and hip rates), ``noise_leg_length``, ``noise_hip_angle`` on the hip angle and
+    the pitch."""
 
     x: float
     z: float
@@ -235,13 +238,10 @@ class Hopper:
         self.data = self._mj.MjData(self.model)
         self.layout = Layout.of(self.model)
         self._rng = np.random.default_rng(p.seed)
-        self._sigma = np.array(
-            [p.noise_position] * 2
-            + [p.noise_hip_angle]
-            + [p.noise_velocity] * 2
-            + [p.noise_hip_angle / p.control_period]
-            + [p.noise_leg_length, p.noise_velocity, p.noise_hip_angle, p.noise_hip_angle / p.control_period]
-        )
+        # the reading's noise, in _truth's order: angular rates get noise_velocity / l0
+        pos, vel, ang = p.noise_position, p.noise_velocity, p.noise_hip_angle
+        turn = vel / p.l0
+        self._sigma = np.array([pos, pos, ang, vel, vel, turn, p.noise_leg_length, vel, ang, turn])
         self._noisy = bool(np.any(self._sigma > 0))
         self._mu = p.foot_mass * p.stance_mass / p.total_mass
         self._flight_c = 2.0 * math.sqrt(p.k_c * self._mu)  # critical damping of the foot on the spring

@@ -39,15 +39,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .mj import mujoco, numbers
-from .params import RobotParams
+from .params import THIGH_GYRATION, RobotParams
 from .terrain import Terrain
 
 __all__ = ["ACTUATORS", "Layout", "build", "xml"]
 
 #: The actuators, in order (module docstring).
 ACTUATORS = ("spring", "damper", "leg_motor", "hip")
-#: The thigh's radius of gyration about the hip [m] (its inertia thigh_mass * 0.1^2).
-THIGH_GYRATION = 0.1
 
 
 def xml(params: RobotParams, terrain: Terrain | None = None) -> str:

@@ -24,10 +24,14 @@ from dataclasses import dataclass, field, fields, replace
 from ..api.numeric import is_real, num
 from ..api.params import SlipParams
 
-__all__ = ["FIELDS", "PITCH_MODES", "RobotParams", "RobotParamsError"]
+__all__ = ["FIELDS", "PITCH_MODES", "RobotParams", "RobotParamsError", "THIGH_GYRATION"]
 
 #: The body's pitch: locked (a planar point on two slides), or a hinge balanced in stance by the hip.
 PITCH_MODES = ("locked", "hinge")
+
+
+#: The thigh's radius of gyration about the hip [m] (its inertia thigh_mass * 0.1^2).
+THIGH_GYRATION = 0.1
 
 
 class RobotParamsError(ValueError):
@@ -120,7 +124,7 @@ class RobotParams:
     pitch_kd: float = _f(200.0, "N m s/rad", "non_negative", "stance attitude rate gain")
     gravity: float = _f(9.81, "m/s^2", "positive", "gravitational acceleration (pointing down)")
     noise_position: float = _f(0.0, "m", "non_negative", "sensor noise std: body x and z")
-    noise_velocity: float = _f(0.0, "m/s", "non_negative", "sensor noise std: body and leg-length rates")
+    noise_velocity: float = _f(0.0, "m/s", "non_negative", "sensor noise std: rates (angular: / l0)")
     noise_leg_length: float = _f(0.0, "m", "non_negative", "sensor noise std: leg length")
     noise_hip_angle: float = _f(0.0, "rad", "non_negative", "sensor noise std: hip angle and body pitch")
     latency: int = _f(0, "periods", "count", "sensor latency in control periods (1: one period old)")
@@ -168,6 +172,28 @@ class RobotParams:
             f"a whole multiple of timestep = {p.timestep:.6g} s",
             "timestep",
         )
+        inertia, period = p.leg_inertia, p.control_period
+        rel(
+            "hip_kd",
+            lambda: p.hip_kd * period <= inertia,
+            f"<= leg inertia / control_period = {inertia / period:.6g} (the discrete servo is unstable "
+            "from about twice that)",
+            "control_period",
+            "foot_mass",
+            "thigh_mass",
+            "foot_radius",
+            "l0",
+        )
+        rel(
+            "hip_kp",
+            lambda: p.hip_kp * period**2 <= 0.5 * inertia,
+            f"<= leg inertia / (2 control_period^2) = {0.5 * inertia / period**2:.6g}",
+            "control_period",
+            "foot_mass",
+            "thigh_mass",
+            "foot_radius",
+            "l0",
+        )
         rel(
             "contact_time",
             lambda: p.contact_time >= 2 * p.timestep,
@@ -197,6 +223,17 @@ class RobotParams:
     def total_mass(self) -> float:
         """Every body's mass [kg]."""
         return self.body_mass + self.thigh_mass + self.foot_mass
+
+    @property
+    def leg_inertia(self) -> float:
+        """The swinging leg's inertia about the hip [kg m^2]: the thigh's, the foot on its arm
+        (l0 - foot_radius) and the foot sphere's own."""
+        arm = self.l0 - self.foot_radius
+        return (
+            self.thigh_mass * THIGH_GYRATION**2
+            + self.foot_mass * arm**2
+            + 0.4 * self.foot_mass * self.foot_radius**2
+        )
 
     @property
     def substeps(self) -> int:
