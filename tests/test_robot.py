@@ -11,7 +11,9 @@ import sys
 
 import numpy as np
 import pytest
+from slipmaps.runtime.robot.mj import headless_gl  # no MuJoCo needed
 
+headless_gl()  # before mujoco's import: it picks its GL backend then
 mujoco = pytest.importorskip("mujoco")
 
 import slipmaps  # noqa: E402
@@ -24,8 +26,8 @@ from slipmaps.runtime.robot.swing import hold, ramp, table  # noqa: E402
 from slipmaps.runtime.robot.terrain import Terrain  # noqa: E402
 
 P = RobotParams()
-#: The exact SLIP's periodic touchdown angles from a 1.1 m apex (fixed_points("exact", P.slip_params()
-#: , apex_height=1.1, speed=v)); test_gait_angles_are_the_librarys checks them.
+#: The exact SLIP's periodic touchdown angles from a 1.1 m apex (``fixed_points("exact",
+#: P.slip_params(), apex_height=1.1, speed=v)``); test_gait_angles_are_the_librarys checks them.
 GAIT = {3.0: 0.1826716134074924, 4.0: 0.22774888061184945, 5.0: 0.26672803415706936}
 
 
@@ -384,3 +386,15 @@ def test_drawn_frames_and_gif(tmp_path):
     assert len(images) == len(robot.trajectory.time) >= 4 and images[0].shape == (120, 160, 3)
     path = render.write_gif(images, tmp_path / "hop.gif", 10)
     assert path.stat().st_size > 1000
+
+
+def test_frames_render_or_draw():
+    """MuJoCo's renderer where a GL context can be made (EGL headless), else the drawing."""
+    from slipmaps.runtime.robot import render
+
+    robot = Hopper(P, log_rate=10)
+    robot.place(1.1, 4.0, leg_angle=GAIT[4.0])
+    robot.hop(hold(GAIT[4.0], P.k_c, P.k_d))
+    images, how = render.frames(robot, width=160, height=120)
+    assert how in ("mujoco", "matplotlib") and len(images) == len(robot.trajectory.time)
+    assert images[0].shape == (120, 160, 3) and images[0].std() > 5  # not a blank frame

@@ -11,15 +11,20 @@ from __future__ import annotations
 import importlib
 import os
 
-__all__ = ["MISSING", "mujoco", "numbers"]
+__all__ = ["MISSING", "headless_gl", "mujoco", "numbers"]
 
 MISSING = "the robot (slipmaps.runtime.robot) needs MuJoCo: pip install 'slipmaps[robot]'"
 
 
-def mujoco():
-    """The ``mujoco`` module; ImportError (one line, :data:`MISSING`) when it is not installed."""
+def headless_gl() -> None:
+    """Without a ``DISPLAY``, ``MUJOCO_GL=egl`` unless it is set (call before importing mujoco)."""
     if not os.environ.get("DISPLAY"):
         os.environ.setdefault("MUJOCO_GL", "egl")
+
+
+def mujoco():
+    """The ``mujoco`` module; ImportError (one line, :data:`MISSING`) when it is not installed."""
+    headless_gl()
     try:
         return importlib.import_module("mujoco")
     except ImportError as e:
