@@ -25,16 +25,16 @@ of the hip for forward running: the hip hinge turns about -y in MuJoCo's x-z pla
 mass (its horizontal speed is constant in flight, the torso's is not while the leg swings).
 
 Measured with the defaults (``python benchmarks/bench_robot.py``; 2-core AMD EPYC, MuJoCo 4.0.1, one
-core, load 2-3): one hop from a 1.1 m apex with the ideal SLIP's periodic touchdown angle held from
+core): one hop from a 1.1 m apex with the ideal SLIP's periodic touchdown angle held from
 the apex (k_c = k_d = 20 kN/m), the robot against the exact SLIP (m = body + thigh = 30.3 kg):
 
-=======  ========  ================  ===========  ===========  =========  ==========  =======
-v [m/s]  angle     next apex - SLIP  energy lost  touchdown    liftoff    foot skid   bounces
-=======  ========  ================  ===========  ===========  =========  ==========  =======
-3        0.1827    +2.1 mm, -2.73 %  1.47 %       3.80 J       3.05 J     14.6 mm     1
-4        0.2277    +9.6 mm, -3.00 %  2.03 %       6.57 J       5.10 J     22.7 mm     1
-5        0.2667    +18.7 mm, -3.08 % 2.49 %       10.03 J      7.72 J     34.9 mm     3
-=======  ========  ================  ===========  ===========  =========  ==========  =======
+=======  ======  ==================  ===========  =========  =======  =========  =======
+v [m/s]  angle   next apex - SLIP    energy lost  touchdown  liftoff  foot skid  bounces
+=======  ======  ==================  ===========  =========  =======  =========  =======
+3        0.1827  +2.1 mm, -2.73 %    1.47 %       3.80 J     3.05 J   14.6 mm    1
+4        0.2277  +9.6 mm, -3.00 %    2.03 %       6.57 J     5.10 J   22.7 mm    1
+5        0.2667  +18.7 mm, -3.08 %   2.49 %       10.03 J    7.72 J   34.9 mm    3
+=======  ======  ==================  ===========  =========  =======  =========  =======
 
 The touchdown loss (apex -> bottom) is 1.12-1.21 times the foot's kinetic energy as it meets the
 ground, the liftoff loss (bottom -> next apex) 0.95-0.99 times the foot's kinetic energy relative
@@ -42,8 +42,9 @@ to the body at liftoff (its leg-wise part caught by the leg's stop, its swing st
 servo). The robot's own periodic gait at (1.1 m, 4 m/s) needs k_d = 23.3 kN/m and touches down at
 0.2011 rad, not the SLIP's 0.2277: the foot's momentum, lost at touchdown and taken from the body
 at liftoff, costs about 2 % of the speed a hop, which a smaller angle wins back; with a 20 g foot
-the periodic angle is 0.2256 rad. Speed: a 30-hop run (15.7 s simulated) takes 0.14-0.19 s, 81-112x
-real time; the bare physics alone runs at 112-132x, the run takes 1.2-1.4x its time. The spring as
-an affine actuator costs 8.7 ms per simulated second; the same force set from Python before every
-physics step 11.4-12.7 ms (1.3-1.5x), with the same next apex.
+the periodic angle is 0.2256 rad. Speed (four runs of the benchmark, the machine's load 2-5 on its
+2 cores): a 30-hop run (15.7 s simulated) takes 0.14-0.29 s, 54-112x real time; the bare physics
+alone runs at 62-132x, the run takes 1.0-1.4x its time. The spring as an affine actuator costs
+8.7-23 ms per simulated second; the same force set from Python before every physics step 1.3-2.3x
+that, with the same next apex.
 """

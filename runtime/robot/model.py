@@ -26,9 +26,8 @@ them once per control period and MuJoCo computes the force every physics step:
 - ``leg_motor``: a force ctrl [N] along the leg (shortens the leg after liftoff);
 - ``hip``: a torque ctrl [N m] on the hip, within ``hip_torque_limit``.
 
-Measured (``python benchmarks/bench_robot.py``): a hop with the affine spring costs 8.7 ms per
-simulated second, with the same force set from Python before every physics step 1.3-1.5x that, for
-the same next apex.
+Measured (``python benchmarks/bench_robot.py``, side by side in one run): the same force set from
+Python before every physics step makes a hop 1.3-2.3x slower, for the same next apex.
 
 Contacts and the leg stops: ``solref = (contact_time, contact_damping)``, ``solimp``; the foot's
 friction ``friction`` (torsional and rolling 0); integrator ``implicitfast``.
