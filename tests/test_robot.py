@@ -398,3 +398,13 @@ def test_frames_render_or_draw():
     images, how = render.frames(robot, width=160, height=120)
     assert how in ("mujoco", "matplotlib") and len(images) == len(robot.trajectory.time)
     assert images[0].shape == (120, 160, 3) and images[0].std() > 5  # not a blank frame
+
+
+def test_a_damped_leg_that_settles_is_no_liftoff():
+    """A hop in place on a leg damped at 2000 N s/m: the bottom after 52 ms (measured), then the body
+    settles on the spring and the stance outlasts STANCE_LIMIT."""
+    robot = Hopper(P.with_(leg_damping=2_000.0))
+    robot.place(1.1, 0.0, leg_angle=0.0)
+    hop = robot.hop(hold(0.0, P.k_c, P.k_d))
+    assert hop.status == Status.NO_LIFTOFF and 0.03 < hop.t_bottom < 0.08
+    assert math.isnan(hop.t_stance) and np.isnan(hop.liftoff).all() and math.isnan(hop.apex_height)
