@@ -173,26 +173,19 @@ class RobotParams:
             "timestep",
         )
         inertia, period = p.leg_inertia, p.control_period
+        servo = ("control_period", "foot_mass", "thigh_mass", "foot_radius", "l0")  # what the bounds use
         rel(
             "hip_kd",
             lambda: p.hip_kd * period <= inertia,
             f"<= leg inertia / control_period = {inertia / period:.6g} (the discrete servo is unstable "
             "from about twice that)",
-            "control_period",
-            "foot_mass",
-            "thigh_mass",
-            "foot_radius",
-            "l0",
+            *servo,
         )
         rel(
             "hip_kp",
             lambda: p.hip_kp * period**2 <= 0.5 * inertia,
             f"<= leg inertia / (2 control_period^2) = {0.5 * inertia / period**2:.6g}",
-            "control_period",
-            "foot_mass",
-            "thigh_mass",
-            "foot_radius",
-            "l0",
+            *servo,
         )
         rel(
             "contact_time",
