@@ -772,10 +772,10 @@ def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar, rate=0.0) -> dict[str,
     if not scalar:
         b = ctl.plan_batch(hm, vm, H, V, ground=gr, touchdown_angle=start, retraction_rate=rate)
         cols = {
-            k: np.asarray(b[k])
+            k: np.array(b[k])
             for k in ("status", "touchdown_angle", "k_c", "k_d", "apex_height", "apex_speed")
         }
-        cols |= {k: np.asarray(b[k]) for k in ("residual", "energy_low", "energy_high", "authority")}
+        cols |= {k: np.array(b[k]) for k in ("residual", "energy_low", "energy_high", "authority")}
         cols["solve_us"] = np.full(hm.size, math.nan)
         return cols
     keys = ("touchdown_angle", "k_c", "k_d", "apex_height", "apex_speed", "residual", "authority", "solve_us")
