@@ -160,6 +160,24 @@ def _overrides(args: argparse.Namespace, sc) -> dict:
     return out
 
 
+#: Frames per second of a robot's animation (``--gif`` with ``plant = "mujoco"``).
+GIF_FPS = 20.0
+
+
+def _animation(result, path) -> Path:
+    """The run's animation: the robot rendered by MuJoCo (a drawing without GL) from its logged
+    trajectory on the robot plant, else the SLIP's path drawn by matplotlib."""
+    plant = result.batch.plant
+    if hasattr(plant, "hoppers"):  # the robot plant
+        from ..robot.render import frames, write_gif
+
+        images, _ = frames(plant.hoppers[result.index], width=480, height=360)
+        return write_gif(images, path, plant.settings.log_rate)
+    from ..control.figures import animate
+
+    return animate(result, path)
+
+
 def run(args: argparse.Namespace) -> int:
     from ..api.paths import writable_file
     from .args import image_path
@@ -181,9 +199,12 @@ def run(args: argparse.Namespace) -> int:
 
         sc = resized(sc, overrides.pop("steps"))
     sc = sc.with_(**overrides)
+    from ..control.plant import ROBOT
     from ..control.runs import check
     from ..control.runs import run as run_scenario
 
+    if gif and sc.plant == ROBOT and not sc.plant_options.get("log_rate"):
+        sc = sc.with_(plant_options={**sc.plant_options, "log_rate": GIF_FPS})  # the robot logs its frames
     check(sc)  # the maps and their options, before any work
     if sys.stderr.isatty():  # the first steps wait for the kernels: say so rather than sit silent
         print(
@@ -208,9 +229,7 @@ def run(args: argparse.Namespace) -> int:
 
         written.append(str(run_figure(result, figure)))
     if gif:
-        from ..control.figures import animate
-
-        written.append(str(animate(result, gif)))
+        written.append(str(_animation(result, gif)))
     if args.json:
         data = result.as_dict()
         data["written"] = written

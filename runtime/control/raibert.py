@@ -15,10 +15,11 @@ that ignore each other; two of them act on a planar SLIP:
 * **height by thrust**: here the leg's stiffness after the bottom, the thrust of a leg whose
   stiffness is set (report section 5: k_d > k_c adds (k_d - k_c)(l0 - q_r_b)^2 / 2 of energy),
 
-      k_d = k_c (1 + k_h (H - h) / l0 + k_i S),      S <- S + (H - h) / l0 after each step,
+      k_d = k_c (1 + k_0 + k_h (H - h) / l0 + k_i S),      S <- S + (H - h) / l0 after each step,
 
-  ``h`` the measured apex height, ``H`` the target height, ``k_h`` the proportional and ``k_i`` the
-  integral gain (dimensionless; the integral takes up a plant's steady loss), k_c the nominal
+  ``h`` the measured apex height, ``H`` the target height, ``k_0`` the thrust at no height error
+  (what makes up a hop's loss: 0 on the lossless SLIP), ``k_h`` the proportional and ``k_i`` the
+  integral gain (dimensionless; the integral takes up what the thrust misses), k_c the nominal
   compression stiffness; k_d clipped into the scenario's k_d bounds (default [0.5, 2] k_c).
 
 The third part, the body's attitude by hip torque in stance, is the robot's own
@@ -43,10 +44,11 @@ __all__ = ["RaibertGains", "RaibertState", "raibert_controls"]
 @dataclass(frozen=True)
 class RaibertGains:
     """The gains of Raibert's controller (module docstring): ``k_v`` [s] foot placement per unit of
-    speed error, ``k_h`` and ``k_i`` (dimensionless) the height loop's proportional and integral
-    gains on k_d / k_c."""
+    speed error, ``k_0`` (dimensionless) the thrust at no height error, ``k_h`` and ``k_i``
+    (dimensionless) the height loop's proportional and integral gains on k_d / k_c."""
 
     k_v: float = 0.06
+    k_0: float = 0.15
     k_h: float = 0.5
     k_i: float = 0.2
 
@@ -78,5 +80,5 @@ def raibert_controls(gains: RaibertGains, params, h, v, H, V, t_stance, integral
     T = np.where(np.isfinite(t_stance), t_stance, math.pi * math.sqrt(params.m / params.k_c))
     x_f = v * T / 2.0 + gains.k_v * (v - V)
     angle = np.arcsin(np.clip(x_f / params.q_r_td, -0.95, 0.95))
-    k_d = params.k_c * (1.0 + gains.k_h * (H - h) / params.l0 + gains.k_i * integral)
+    k_d = params.k_c * (1.0 + gains.k_0 + gains.k_h * (H - h) / params.l0 + gains.k_i * integral)
     return angle, np.clip(k_d, *k_d_bounds)

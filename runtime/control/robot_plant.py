@@ -76,13 +76,18 @@ class RobotPlant:
     def start(self, scenario, grounds, seeds) -> None:
         """One robot per run on its terrain (the rows of ``grounds``, one level per segment), its
         sensor noise seeded by the run's seed."""
+        from ..robot.settings import step_estimate
         from ..robot.terrain import Terrain
 
         s = self.settings
+        spacing = s.spacing or step_estimate(self.params, scenario.start_height, scenario.start_speed)
+        ramp = min(s.ramp, spacing)
+        # ground well beyond the last level: a run that outpaces its levels stays on the last one
+        margin = 2.0 * grounds.shape[1] * spacing + 20.0
+        self.spacing = spacing
         self.hoppers = []
         for r in range(grounds.shape[0]):
-            levels = grounds[r]
-            terrain = Terrain(levels, s.spacing, kind=s.terrain, ramp=s.ramp)
+            terrain = Terrain(grounds[r], spacing, kind=s.terrain, ramp=ramp, margin=margin)
             params = self.params.with_(seed=int(self.params.seed) * 1_000_003 + int(seeds[r]))
             self.hoppers.append(self._hopper.Hopper(params, terrain, log_rate=s.log_rate or None))
         self._ground = np.zeros(len(self.hoppers))

@@ -7,7 +7,8 @@ parameters (every field of :class:`~.params.RobotParams`, by name) and its terra
 - ``terrain``: ``"ramps"`` (default: a heightfield, the levels joined by ramps) or ``"boxes"``
   (vertical steps); the levels are the scenario's touchdown grounds, one per segment
   (:class:`~.terrain.Terrain`), so a flat scenario is a plane;
-- ``spacing`` [m]: the segments' length (default 1.0);
+- ``spacing`` [m]: the segments' length (default: :func:`step_estimate` of the start apex, so that
+  a run at constant speed meets about one level per step);
 - ``ramp`` [m]: the ramps' width (default 0.5, at most ``spacing``);
 - ``log_rate`` [frames/s]: log each robot's trajectory at this rate for rendering (default 0: off).
 
@@ -22,21 +23,22 @@ from dataclasses import dataclass, fields
 from ..api.numeric import is_real, num
 from .params import RobotParams, RobotParamsError
 
-__all__ = ["RobotSettings", "TERRAIN_KEYS", "robot_settings"]
+__all__ = ["RobotSettings", "TERRAIN_KEYS", "robot_settings", "step_estimate"]
 
 #: The terrain and logging options, with their defaults (module docstring).
-TERRAIN_KEYS = {"terrain": "ramps", "spacing": 1.0, "ramp": 0.5, "log_rate": 0.0}
+TERRAIN_KEYS = {"terrain": "ramps", "spacing": None, "ramp": 0.5, "log_rate": 0.0}
 _TERRAINS = ("ramps", "boxes")
 
 
 @dataclass(frozen=True)
 class RobotSettings:
     """The robot plant's options: ``params`` (:class:`~.params.RobotParams`), the terrain's
-    ``terrain`` kind, ``spacing`` and ``ramp`` [m], and ``log_rate`` [frames/s] (0: no log)."""
+    ``terrain`` kind, ``spacing`` (None: :func:`step_estimate`) and ``ramp`` [m], and ``log_rate``
+    [frames/s] (0: no log)."""
 
     params: RobotParams
     terrain: str = "ramps"
-    spacing: float = 1.0
+    spacing: float | None = None
     ramp: float = 0.5
     log_rate: float = 0.0
 
@@ -67,13 +69,16 @@ def robot_settings(options: dict | None) -> RobotSettings:
     values = {}
     for key in ("spacing", "ramp", "log_rate"):
         x = options.get(key, TERRAIN_KEYS[key])
+        if x is None:
+            values[key] = None
+            continue
         finite = is_real(x) and math.isfinite(x)
         if not (finite and (x >= 0 if key == "log_rate" else x > 0)):
             need = ">= 0" if key == "log_rate" else "> 0"
             problems.append(f"plant option {key} must be a finite number {need}, got {num(x)}")
         else:
             values[key] = float(x)
-    if not problems and values["ramp"] > values["spacing"]:
+    if not problems and values["spacing"] is not None and values["ramp"] > values["spacing"]:
         problems.append(
             f"plant option ramp must not exceed spacing = {num(values['spacing'])} m, "
             f"got {num(values['ramp'])}"
@@ -81,3 +86,13 @@ def robot_settings(options: dict | None) -> RobotSettings:
     if problems:
         raise ValueError("\n".join(problems))
     return RobotSettings(params=params, terrain=terrain, **values)
+
+
+def step_estimate(params: RobotParams, apex_height: float, apex_speed: float) -> float:
+    """About the distance [m] the robot travels in a step from an apex at ``apex_height`` [m] and
+    ``apex_speed`` [m/s]: the speed times a flight from the apex to 0.95 l0 and back plus a
+    spring-mass half period, at least l0 (a hop in place)."""
+    g = params.gravity
+    fall = max(apex_height - 0.95 * params.l0, 0.01)
+    period = 2.0 * math.sqrt(2.0 * fall / g) + math.pi * math.sqrt(params.stance_mass / params.k_c)
+    return max(params.l0, abs(apex_speed) * period)
