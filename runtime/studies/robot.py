@@ -180,15 +180,16 @@ def ramp_grounds(amplitude: float, runs: int, steps: int, seed: int) -> np.ndarr
 # one task: a batch of runs, summarised (runs in a worker process)
 # ----------------------------------------------------------------------------------------------
 def _errors(batch, settle: int) -> dict:
-    """The next apex's errors against the targets over the steps after ``settle`` of the runs that
-    did not fall: relative mean (signed) and root mean square of speed and height."""
+    """The next apex's errors against the scenario's targets (the nominal ones, not the planner's
+    steps toward them) over the steps after ``settle`` of the runs that did not fall: relative mean
+    (signed) and root mean square of speed and height."""
     keep = ~batch.fell
     out = {"runs": int(batch.runs), "falls": int(batch.fell.sum())}
     if not keep.any():
         return out
     for key in ("speed", "height"):
         got = batch[f"next_{key}"][keep, settle:]
-        want = batch[f"target_{key}"][keep, settle:]
+        want = batch[f"nominal_{key}"][keep, settle:]
         rel = (got - want) / np.abs(want)
         out[f"{key}_bias"] = float(np.nanmean(rel))
         out[f"{key}_rms"] = float(np.sqrt(np.nanmean(rel**2)))
@@ -202,7 +203,7 @@ def _settle(values: np.ndarray, targets: np.ndarray, tol: float = 0.01) -> list[
     changes = [0] + [i for i in range(1, len(targets)) if targets[i] != targets[i - 1]]
     ends = [*changes[1:], len(targets)]
     for a, b in zip(changes[1:], ends[1:], strict=True):
-        inside = np.abs(values[a:b] - targets[a:b]) <= tol * np.abs(targets[a:b])
+        inside = np.abs(values[a:b] - targets[a:b]) <= tol * np.abs(targets[a:b])  # NaN (a fall): out
         if not inside[-1]:
             out.append(None)
             continue
@@ -228,10 +229,12 @@ def _task(job: dict) -> dict:
     if job.get("series"):
         out["series"] = {
             k: [None if not math.isfinite(x) else float(x) for x in batch[k][0]]
-            for k in ("next_speed", "next_height", "target_speed", "target_height")
+            for k in ("next_speed", "next_height")
         }
         for key in ("speed", "height"):
-            out[f"settle_{key}"] = _settle(batch[f"next_{key}"][0], batch[f"target_{key}"][0])
+            target = np.asarray(getattr(sc, f"target_{key}"))
+            out["series"][f"target_{key}"] = target.tolist()
+            out[f"settle_{key}"] = _settle(batch[f"next_{key}"][0], target)
     if job.get("hops"):
         batch.plant = None  # its robots stay in the worker
         out["batch"] = batch  # identification: the logged hops themselves
