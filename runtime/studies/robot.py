@@ -75,7 +75,7 @@ PROFILE = ((3.0, 10), (5.0, 15), (3.0, 15))
 #: The height profile at 4 m/s: (target height, hops).
 HEIGHTS = ((1.05, 10), (1.2, 15), (1.05, 15))
 #: The ramps' amplitudes [m], the runs per amplitude and speed, the noise runs per speed.
-AMPLITUDES = (0.025, 0.05, 0.1, 0.15, 0.2, 0.3)
+AMPLITUDES = (0.025, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4)
 RAMP_RUNS = 50
 NOISE_RUNS = 10
 #: Raibert's gain grid: k_v [s], k_0, k_h, k_i.
