@@ -371,6 +371,23 @@ def test_slip_params_name_k_when_k_set_both():
         slipmaps.SlipParams(k=-5)
 
 
+@pytest.mark.parametrize(
+    ("call", "needle"),
+    [
+        (lambda: slipmaps.SlipParams(mass=3), "SlipParams: got an unexpected keyword argument 'mass'"),
+        (lambda: slipmaps.SlipParams(80, 1, 2e4, 4), "SlipParams: too many positional arguments"),
+        (lambda: slipmaps.HUMAN_RUNNER.with_(mass=3), "SlipParams has no field(s) mass"),
+    ],
+)
+def test_an_unknown_slip_params_argument_names_slip_params_and_its_arguments(call, needle):
+    """`SlipParams(mass=3)` said only "got an unexpected keyword argument 'mass'"."""
+    with pytest.raises(TypeError) as err:
+        call()
+    message = str(err.value)
+    assert message.startswith(needle) and "\n" not in message, message
+    assert message.endswith("; its arguments: m, l0, k, k_c, k_d, g_s, g_f, q_r_td, q_r_lo"), message
+
+
 # --- defaults that scale with the leg -------------------------------------------------------------
 
 
