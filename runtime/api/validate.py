@@ -64,7 +64,7 @@ def positive(name: str, value: object) -> float:
 def leg_angle(name: str, value: object) -> float:
     x = real(name, value)
     if abs(x) >= math.pi / 2:
-        raise ValueError(f"{name} must satisfy |{name}| < pi/2 (leg above the ground), got {num(x)}")
+        raise ValueError(f"{name} must lie in (-pi/2, pi/2) (the leg above the ground), got {num(x)}")
     return x
 
 

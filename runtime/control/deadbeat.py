@@ -449,7 +449,10 @@ def _controls(call: Call, controls) -> tuple[str, ...]:
     return tuple(sorted(names, key=order.__getitem__))
 
 
-def _bounds(params: SlipParams, controls: tuple[str, ...], bounds) -> dict[str, tuple[float, float]]:
+def control_bounds(params: SlipParams, controls: tuple[str, ...], bounds) -> dict[str, tuple[float, float]]:
+    """The bounds of ``controls``: the defaults, with ``bounds`` (control -> (low, high)) over them;
+    ValueError (one line naming ``bounds[control]``) for a pair that is not one (every key of
+    ``bounds`` is checked, whether a control of ``controls`` or not)."""
     lo_k, hi_k = (f * params.k_c for f in DEFAULT_STIFFNESS_RANGE)
     out = {c: (DEFAULT_ANGLE_BOUNDS if c == "touchdown_angle" else (lo_k, hi_k)) for c in controls}
     for key, pair in dict(bounds or {}).items():
@@ -521,7 +524,7 @@ class Deadbeat:
         self.params = params
         self._rate_limit = limit("retraction_rate", params)  # derive/params.py's row
         self.controls = _controls(call, controls)
-        self.bounds = _bounds(params, self.controls, bounds)
+        self.bounds = control_bounds(params, self.controls, bounds)
         if jacobian not in ("broyden", "newton"):
             raise ValueError(f"jacobian must be 'broyden' or 'newton', got {jacobian!r}")
         if not isinstance(budget, bool):

@@ -43,10 +43,11 @@ machine's memory is refused with the estimate (ValueError). Ctrl-C during a run 
 
 from __future__ import annotations
 
+import difflib
 import math
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from pathlib import Path
 
 import numpy as np
@@ -54,8 +55,9 @@ from slipmaps.generated.status import Status
 
 from ..api.frames import flat_columns, status_columns, to_pandas
 from ..api.index import get
+from ..api.numeric import num
 from ..api.progress import Bar
-from ..api.validate import POLAR_NAMES
+from ..api.validate import POLAR_NAMES, real_array
 from . import compiled
 from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
@@ -132,7 +134,15 @@ _CODES = ("plan_status", "bottom_status", "plant_status")
 
 
 def scenario_of(scenario, overrides: dict) -> Scenario:
-    """A :class:`Scenario` from a Scenario, a TOML path or a dict, with fields overridden."""
+    """A :class:`Scenario` from a Scenario, a TOML path or a dict, with fields overridden: every
+    override checked before any work (TypeError for a name that is no field, naming the fields;
+    :class:`~.scenarios.ScenarioError`, a ValueError, for a value out of its field's domain)."""
+    names = [f.name for f in fields(Scenario)]
+    for key in overrides:
+        if key not in names:
+            close = difflib.get_close_matches(key, names, n=1)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            raise TypeError(f"unknown scenario field {key!r}{hint}; the fields: {', '.join(names)}")
     if scenario is None:
         sc = Scenario()
     elif isinstance(scenario, Scenario):
@@ -456,12 +466,19 @@ def run_batch(
     run (default 0, 1, ...). ``scalar`` (default: one run) plans with the scalar solve, timed per step.
     """
     sc = scenario_of(scenario, overrides)
-    G = np.atleast_2d(np.asarray(sc.ground if grounds is None else grounds, dtype=float))
-    if G.shape[1] != sc.steps:
+    G = np.atleast_2d(real_array("grounds", sc.ground if grounds is None else grounds))
+    if G.ndim != 2 or G.shape[1] != sc.steps:
         raise ValueError(f"grounds must have {sc.steps} columns (one per step), got shape {G.shape}")
+    if not np.isfinite(G).all():
+        raise ValueError(f"grounds must be finite, got {num(G[~np.isfinite(G)][0])}")
     R, S = G.shape
     check_memory(R, S)
-    seeds = np.arange(R) if seeds is None else np.asarray(seeds)
+    seeds = np.arange(R) if seeds is None else np.atleast_1d(real_array("seeds", seeds))
+    if seeds.shape != (R,) or not np.all((seeds >= 0) & (seeds == np.round(seeds))):
+        raise ValueError(f"seeds must be {R} whole numbers >= 0 (one per run), got {seeds.tolist()!r}")
+    for name, flag in (("scalar", scalar), ("progress", progress)):
+        if flag is not None and not isinstance(flag, bool):
+            raise TypeError(f"{name} must be True, False or None, got {flag!r}")
     scalar = (R == 1) if scalar is None else scalar
     ctl = _Controller(sc)
     _warm(ctl, scalar)
