@@ -216,7 +216,8 @@ def test_the_cli_runs_a_scenario_prints_its_table_and_writes_the_figure(tmp_path
     assert main(["run", str(EXAMPLES / "stairs.toml"), "--figure", str(figure)]) == 0
     out = capsys.readouterr().out
     assert "stairs up and down: model iterative, plant exact; completed 14 steps" in out
-    assert out.count("REACHED") == 14 and figure.stat().st_size > 10_000
+    assert out.count(" REACHED ") == 14 and figure.stat().st_size > 10_000  # a row per step
+    assert out.count("plan REACHED: ") == 1  # and the status's meaning once, under the table
     assert main(["run", str(EXAMPLES / "stop.toml"), "--no-figure", "--json", "--steps", "3"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert len(data["steps"]) == 3 and data["fell"] is False
@@ -499,3 +500,24 @@ def test_a_binary_scenario_file_is_named(tmp_path, capsys):
     assert main(["run", str(file), "--no-figure"]) == 2
     err = capsys.readouterr().err.strip()
     assert err == f"slipmaps run: error: {file}: not a TOML file: not UTF-8 text (byte 0)"
+
+
+def test_a_step_planned_on_the_assumed_flat_ground_says_blind_not_reached():
+    """Unknown ground (known = 0): the apex-set policies plan on flat ground, so a step whose true
+    ground differs is BLIND (the issue's run said REACHED while the plant missed by up to 166 mm);
+    on known ground, or on flat ground unknown, a reached step is REACHED."""
+    blind = slipmaps.run(EXAMPLES / "blind_running.toml", steps=4, policy="retraction", retraction_rate=-1.0)
+    moved = blind.column("ground") != 0.0
+    assert moved.all()  # the filter below is not empty: every touchdown off the flat ground
+    assert [s["plan_status"] for s in blind.steps] == ["BLIND"] * 4
+    dh, _ = blind.errors()
+    assert np.abs(dh).max() > 0.05  # measured 124 mm by step 3: what BLIND warns of
+    assert "plan BLIND: the model's next apex on the target on the flat ground the controller assumed" in (
+        blind.table()
+    )
+    flat = slipmaps.run(steps=2, known=0, policy="retraction", retraction_rate=-1.0)
+    assert [s["plan_status"] for s in flat.steps] == ["REACHED"] * 2
+    known = slipmaps.run(EXAMPLES / "rough_ground.toml", steps=3, policy="retraction", retraction_rate=-1.0)
+    assert [s["plan_status"] for s in known.steps] == ["REACHED"] * 3
+    assert np.abs(known.errors()[0]).max() < 1e-5  # measured 4e-6 m
+    assert set(runs.PLAN_NAMES.values()) - {"-"} == set(runs.PLAN_MEANINGS)
