@@ -521,3 +521,39 @@ def test_a_step_planned_on_the_assumed_flat_ground_says_blind_not_reached():
     assert [s["plan_status"] for s in known.steps] == ["REACHED"] * 3
     assert np.abs(known.errors()[0]).max() < 1e-5  # measured 4e-6 m
     assert set(runs.PLAN_NAMES.values()) - {"-"} == set(runs.PLAN_MEANINGS)
+
+
+def test_run_figures_label_their_ticks_with_plain_values(tmp_path, monkeypatch):
+    """A run that holds 1 m within a few micrometres drew its apex panel as '1e-6 + 9.9999e-1'; every
+    axis now labels plain values (api/paths.py's plain_ticks, in the one save_figure)."""
+    from slipmaps.runtime.api import paths
+    from slipmaps.runtime.control.figures import run_figure
+
+    drawn = []
+    save = paths.save_figure
+
+    def spy(fig, path, **kw):
+        out = save(fig, path, **kw)
+        drawn.append(fig)
+        return out
+
+    monkeypatch.setattr(paths, "save_figure", spy)
+    r = slipmaps.run(steps=3)
+    heights = r.column("next_height")
+    assert 0.0 < np.ptp(heights) < 1e-4 and abs(heights.mean() - 1.0) < 1e-4  # what drew the offset
+    run_figure(r, tmp_path / "run.png")
+    (fig,) = drawn
+    texts = [a.get_offset_text().get_text() for ax in fig.axes for a in (ax.xaxis, ax.yaxis)]
+    assert len(texts) == 8 and texts == [""] * 8
+    labels = [t.get_text() for t in fig.axes[1].yaxis.get_ticklabels() if t.get_text()]
+    assert labels and all(abs(float(t.replace("\u2212", "-")) - 1.0) < 1e-3 for t in labels), labels
+
+
+def test_every_figure_is_saved_through_the_one_helper():
+    """Every figure file is written by api/paths.py's save_figure (plain ticks, one error line)."""
+    calls = [
+        path.relative_to(ROOT).as_posix()
+        for path in (ROOT / "runtime").rglob("*.py")
+        if ".savefig(" in path.read_text()
+    ]
+    assert calls == ["runtime/api/paths.py"]
