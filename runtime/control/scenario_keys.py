@@ -272,11 +272,14 @@ def _params_rows() -> list[tuple[str, str, str, str, str]]:
 
 
 def reference_markdown() -> str:
-    """The reference as Markdown: a table per TOML table, its keys in the loader's order."""
-    from .scenarios import KEYS
-
+    """The reference as Markdown: a table per TOML table, its keys in this table's order (the
+    loader's: a test keeps them equal), then ``[params]``, SlipParams' fields. (This module does not
+    import the loader, which reads :data:`KEY_DOCS`.)"""
+    tables: dict[str, list[str]] = {}
+    for table, key in KEY_DOCS:
+        tables.setdefault(table, []).append(key)
     out = []
-    for table, keys in KEYS.items():
+    for table, keys in [*tables.items(), ("params", [])]:
         out.append(f"### {'Top level' if not table else f'[{table}]'}")
         out.append("")
         out.append("| key | type | default | unit | meaning |")
