@@ -65,7 +65,8 @@ def add_parser(sub) -> argparse.ArgumentParser:
         type=float,
         default=None,
         metavar="RAD_PER_S",
-        help="the swing leg's rate after the apex (policy retraction; negative: retracting)",
+        help="the swing leg's rate after the apex (policy retraction; negative: retracting; within "
+        "+-sqrt(g_f/q_r_td), 3.13 rad/s for a 1 m leg)",
     )
     p.add_argument("--option", action="append", metavar="KEY=VALUE", help="an option of the model map")
     p.add_argument("--plant-option", action="append", metavar="KEY=VALUE", help="an option of the plant")
@@ -151,7 +152,11 @@ def _overrides(args: argparse.Namespace, sc) -> dict:
     if args.policy is not None:
         out["policy"] = args.policy
     if args.retraction_rate is not None:
-        out["retraction_rate"] = args.retraction_rate
+        from ..api.validate import within_limit
+
+        # the maps' range for the scenario's parameters (derive/params.py's row), named by the flag
+        rate = args.retraction_rate
+        out["retraction_rate"] = within_limit("--retraction-rate", "retraction_rate", rate, sc.params)
         out.setdefault("policy", "retraction" if sc.fixed_angle is None else sc.policy)
     if args.option:
         out["model_options"] = map_options(out.get("model", sc.model), args.option)

@@ -29,8 +29,15 @@ Records (:class:`RunBatch`, arrays runs x steps; :class:`Run` one run with its s
 the apex (true and measured), the ground, the nominal and the planned target, the controls (the
 leg's angle at the apex ``swing_angle`` and at the touchdown ``touchdown_angle``; ``swing``: the
 leg's angle at :data:`SWING_SAMPLES` evenly spaced times of each descent), the plan status
-(``REACHED``, ``UNREACHABLE``, ``MAP_FAILED``; ``OUT_OF_RANGE`` for a time-based step whose ground
-lies outside its policy's; ``FIXED`` for a fixed-angle run, the self-stable baseline), the plant
+(:data:`PLAN_MEANINGS`: what the controller's solve promises on its model. ``REACHED``, the model's
+next apex on the target from the measured apex on the true ground; ``BLIND``, the same on the flat
+ground the controller assumed where the ground is unknown (``known = 0``) and differs: the plant
+meets the true ground at another time and angle, so its apex misses by the ground's effect (up to
+166 mm on ``examples/blind_running.toml`` with ``policy = "retraction"``, ``retraction_rate =
+-1.0``; a time-based step reads its status where the leg met the true ground, so it is never
+BLIND); ``UNREACHABLE``, ``MAP_FAILED``; ``OUT_OF_RANGE`` for a time-based step whose ground lies
+outside its policy's; ``FIXED`` for a fixed-angle run, the self-stable baseline; ``FEEDBACK`` for
+Raibert's controller, which plans nothing), the plant
 status, the next apex and its error against the planned target, the step length, the controller's
 solve time (us; the scalar run times :meth:`Deadbeat.plan` itself, a batch the parallel call per
 run, a time-based step its policy per run), and the stance states and times that make the
@@ -43,10 +50,11 @@ machine's memory is refused with the estimate (ValueError). Ctrl-C during a run 
 
 from __future__ import annotations
 
+import difflib
 import math
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from pathlib import Path
 
 import numpy as np
@@ -54,8 +62,9 @@ from slipmaps.generated.status import Status
 
 from ..api.frames import flat_columns, status_columns, to_pandas
 from ..api.index import get
+from ..api.numeric import num
 from ..api.progress import Bar
-from ..api.validate import POLAR_NAMES
+from ..api.validate import POLAR_NAMES, real_array
 from . import compiled
 from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
@@ -75,6 +84,7 @@ __all__ = [
     "memory_estimate",
     "run",
     "run_batch",
+    "PLAN_MEANINGS",
     "PLAN_NAMES",
     "scenario_of",
 ]
@@ -82,16 +92,29 @@ __all__ = [
 #: Below this measured apex speed [m/s] a step that reverses the direction is planned from a hop in
 #: place; above it the target becomes a hop in place first.
 V_REVERSE = 0.05
-#: Plan status codes in the records: the solver's, and the two a record adds.
-FIXED, NOT_RUN, FEEDBACK = -1, -2, -3
+#: Plan status codes in the records: the solver's, the swing policy's OUT_OF_RANGE, and those a
+#: record adds: BLIND (a solve, so >= 0 as the solver's), FIXED, NOT_RUN and FEEDBACK (no solve).
+BLIND, FIXED, NOT_RUN, FEEDBACK = 4, -1, -2, -3
 PLAN_NAMES = {
     0: "REACHED",
     1: "UNREACHABLE",
     2: "MAP_FAILED",
     3: "OUT_OF_RANGE",
+    BLIND: "BLIND",
     FIXED: "FIXED",
     NOT_RUN: "-",
     FEEDBACK: "FEEDBACK",
+}
+#: What each plan status promises (the table's legend): the controller's, on its model.
+PLAN_MEANINGS = {
+    "REACHED": "the model's next apex on the target, from the measured apex on the true ground",
+    "BLIND": "the model's next apex on the target on the flat ground the controller assumed (the "
+    "ground unknown, known = 0); the plant met the true ground, so its apex misses by that ground's effect",
+    "UNREACHABLE": "the model's closest apex to the target within the bounds",
+    "MAP_FAILED": "the model failed at every control tried (the previous angle, the nominal stiffness)",
+    "OUT_OF_RANGE": "the ground outside the time-based policy's grounds (its end controls held)",
+    "FIXED": "no controller: the fixed angle and the nominal stiffness",
+    "FEEDBACK": "Raibert's feedback controller: no model, nothing planned",
 }
 #: The leg's angle recorded at this many evenly spaced times of each descent (``swing``).
 SWING_SAMPLES = 9
@@ -132,7 +155,15 @@ _CODES = ("plan_status", "bottom_status", "plant_status")
 
 
 def scenario_of(scenario, overrides: dict) -> Scenario:
-    """A :class:`Scenario` from a Scenario, a TOML path or a dict, with fields overridden."""
+    """A :class:`Scenario` from a Scenario, a TOML path or a dict, with fields overridden: every
+    override checked before any work (TypeError for a name that is no field, naming the fields;
+    :class:`~.scenarios.ScenarioError`, a ValueError, for a value out of its field's domain)."""
+    names = [f.name for f in fields(Scenario)]
+    for key in overrides:
+        if key not in names:
+            close = difflib.get_close_matches(key, names, n=1)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            raise TypeError(f"unknown scenario field {key!r}{hint}; the fields: {', '.join(names)}")
     if scenario is None:
         sc = Scenario()
     elif isinstance(scenario, Scenario):
@@ -310,7 +341,8 @@ class Run:
 
     def table(self) -> str:
         """The run as a table, a row per step: the next apex's errors against the target in mm and
-        mm/s (absolute, so a target speed of 0, a stop, has one too)."""
+        mm/s (absolute, so a target speed of 0, a stop, has one too); under it the run's status and
+        a legend line per plan status shown (``slipmaps.runtime.control.runs.PLAN_MEANINGS``)."""
         sc = self.scenario
         head = (
             f"{'step':>4} {'ground':>7} {'apex h':>8} {'apex v':>8} {'target h':>9} {'target v':>9} "
@@ -334,6 +366,8 @@ class Run:
             f"{sc.name}: model {sc.model}, plant {sc.plant}; {self.status}"
             + ("; * k_d chosen again at the bottom" if sc.two_stage else "")
         )
+        shown = {r["plan_status"] for r in self.steps}
+        lines += [f"plan {name}: {text}" for name, text in PLAN_MEANINGS.items() if name in shown]
         return "\n".join(lines)
 
     def as_dict(self) -> dict:
@@ -456,12 +490,19 @@ def run_batch(
     run (default 0, 1, ...). ``scalar`` (default: one run) plans with the scalar solve, timed per step.
     """
     sc = scenario_of(scenario, overrides)
-    G = np.atleast_2d(np.asarray(sc.ground if grounds is None else grounds, dtype=float))
-    if G.shape[1] != sc.steps:
+    G = np.atleast_2d(real_array("grounds", sc.ground if grounds is None else grounds))
+    if G.ndim != 2 or G.shape[1] != sc.steps:
         raise ValueError(f"grounds must have {sc.steps} columns (one per step), got shape {G.shape}")
+    if not np.isfinite(G).all():
+        raise ValueError(f"grounds must be finite, got {num(G[~np.isfinite(G)][0])}")
     R, S = G.shape
     check_memory(R, S)
-    seeds = np.arange(R) if seeds is None else np.asarray(seeds)
+    seeds = np.arange(R) if seeds is None else np.atleast_1d(real_array("seeds", seeds))
+    if seeds.shape != (R,) or not np.all((seeds >= 0) & (seeds == np.round(seeds))):
+        raise ValueError(f"seeds must be {R} whole numbers >= 0 (one per run), got {seeds.tolist()!r}")
+    for name, flag in (("scalar", scalar), ("progress", progress)):
+        if flag is not None and not isinstance(flag, bool):
+            raise TypeError(f"{name} must be True, False or None, got {flag!r}")
     scalar = (R == 1) if scalar is None else scalar
     ctl = _Controller(sc)
     _warm(ctl, scalar)
@@ -637,7 +678,9 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
                 H_step[again], V_step[again] = H2, V2
                 for k in res:
                     res[k][again] = res[k][again] + res2[k] if k == "solve_us" else res2[k]
-        plan = res["status"]
+        # what the solve promises: REACHED on the ground it planned on; BLIND where that was the flat
+        # ground assumed (the ground unknown) and the true one differs
+        plan = np.where((res["status"] == compiled.REACHED) & (gr_model != gr_true), BLIND, res["status"])
         failed = plan == compiled.MAP_FAILED
         th = np.where(failed, start, res["touchdown_angle"])
         kc = np.where(failed, p.k_c, res["k_c"])

@@ -42,7 +42,8 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "table",
         "the human runner",
         "SI",
-        "the controller's SLIP parameters (SlipParams fields)",
+        "the controller's SLIP parameters (SlipParams fields; the human runner's where not given, the "
+        "leg lengths following l0)",
         None,
     ),
     ("", "mismatch"): ("table", "", "", "how the plant differs from the model: `mass`, `stiffness`", None),
@@ -168,7 +169,7 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "policy",
     ),
     ("control", "retraction_rate"): (
-        "number",
+        "number, abs <= sqrt(g_f/q_r_td)",
         "0.0",
         "rad/s",
         "policy retraction (or with fixed_angle): the leg angle after the apex is the angle set plus "
@@ -260,20 +261,25 @@ def _params_rows() -> list[tuple[str, str, str, str, str]]:
     from ..api.params import FIELDS, HUMAN_RUNNER, PARAMETERS
 
     docs = {p["name"]: p for p in PARAMETERS}
-    rows = [
-        (f"`{f}`", "number > 0", repr(getattr(HUMAN_RUNNER, f)), docs[f]["unit"], docs[f]["doc"])
-        for f in FIELDS
-    ]
+    rows = []
+    for f in FIELDS:
+        rest = docs[f]["default"]  # "l0" for a leg length: it follows the rest length
+        kind = f"number in (0, {rest}]" if isinstance(rest, str) else "number > 0"
+        default = rest if isinstance(rest, str) else repr(getattr(HUMAN_RUNNER, f))
+        rows.append((f"`{f}`", kind, default, docs[f]["unit"], docs[f]["doc"]))
     rows.append(("`k`", "number > 0", "", "N/m", "both stiffnesses, k_c = k_d = k"))
     return rows
 
 
 def reference_markdown() -> str:
-    """The reference as Markdown: a table per TOML table, its keys in the loader's order."""
-    from .scenarios import KEYS
-
+    """The reference as Markdown: a table per TOML table, its keys in this table's order (the
+    loader's: a test keeps them equal), then ``[params]``, SlipParams' fields. (This module does not
+    import the loader, which reads :data:`KEY_DOCS`.)"""
+    tables: dict[str, list[str]] = {}
+    for table, key in KEY_DOCS:
+        tables.setdefault(table, []).append(key)
     out = []
-    for table, keys in KEYS.items():
+    for table, keys in [*tables.items(), ("params", [])]:
         out.append(f"### {'Top level' if not table else f'[{table}]'}")
         out.append("")
         out.append("| key | type | default | unit | meaning |")
