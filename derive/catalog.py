@@ -10,7 +10,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import params, symbols
-from .ir import Arg, Field, Group, positive, real, sym
+from .ir import Arg, Field, Group, Guard, positive, real, sym
 from .symbols import (
     l0,
     q_rd_td,
@@ -80,6 +80,20 @@ APEX_ARGS: tuple[Arg, ...] = tuple(
     for r in params.APEX_INPUTS
 )
 GROUND = next(a for a in APEX_ARGS if a.name == "ground")
+
+
+def limit(name: str) -> Guard:
+    """The guard of an apex-return input's ``limit`` (its row in :mod:`.params`): ``|x| <= sqrt(a/b)``
+    as ``x**2 b <= a`` (no square root, no division), else ``INVALID_INPUT``."""
+    row = next(r for r in params.APEX_INPUTS if r["name"] == name)
+    a, b = row["limit"]["sqrt_ratio"]
+    x = _symbol(row["arg"])
+    return Guard(
+        real(x) ** 2 * real(_symbol(b)) <= real(_symbol(a)),
+        "INVALID_INPUT",
+        f"|{row['arg']}| <= sqrt({a}/{b}): {row['limit']['why']}",
+    )
+
 
 #: The public name of an apex-return input (the API's argument and Jacobian column) by kernel argument.
 APEX_PUBLIC = {r["arg"]: r["name"] for r in params.APEX_INPUTS}

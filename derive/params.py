@@ -17,6 +17,12 @@ Domains (the checks both the kernels and the Python layer make):
 - ``non_negative``: finite and >= 0;
 - ``leg_angle``: finite and |x| < pi/2 (the leg above the ground);
 - ``real``: finite.
+
+An input's row may also hold a ``limit`` that depends on the parameters, ``{"sqrt_ratio": (a, b),
+"why": ...}``: ``|x| <= sqrt(a / b)`` of parameters ``a`` and ``b`` (the retraction rate's
+``sqrt(g_f/q_r_td)``). The kernel that needs it guards it (``INVALID_INPUT``:
+:func:`.catalog.limit`), the Python layer checks it where a run or a plan takes the input and names
+it and its range in a scalar call's ``INVALID_INPUT`` message (``runtime/api/validate.py``).
 """
 
 from __future__ import annotations
@@ -106,6 +112,7 @@ APEX_INPUTS: tuple[dict, ...] = (
         "retraction_rate * t (counterclockwise positive like the angle: a forward runner's retracting leg "
         "has a negative rate; Seyfarth, Geyer and Herr 2003); 0 holds the leg at touchdown_angle",
         "unit": "rad/s",
+        "limit": {"sqrt_ratio": ("g_f", "q_r_td"), "why": "the foot's height concave in time"},
         "domain": "real",
         "default": 0.0,
     },

@@ -2,7 +2,8 @@
 
 Imports run one way (a test checks it): ``api`` (the public names, parameters, validation, results,
 the index) < ``exact`` (the ``solve_ivp`` reference of the exact stance; the compiled simulator
-is generated: generated/exact_stance.py, generated/dop853.py) < ``analysis`` (periodic gaits),
+is generated: generated/exact_stance.py, generated/dop853.py), ``robot`` (the MuJoCo monoped, an
+optional extra: it uses ``api`` only) < ``analysis`` (periodic gaits),
 ``sweep`` (parameter sweeps), ``studies`` (the accuracy, convergence, stiffness and stability
 studies and their reports) < ``control`` (deadbeat steps, runs, scenarios and their evaluation: it
 uses ``api`` and ``analysis``) < ``report`` (the report's sections 6-8, written from the studies' and

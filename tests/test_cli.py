@@ -158,7 +158,7 @@ def test_compare_nonsymmetric_touchdown_state(capsys):
     [
         (["--map", "geyer", "--k-c", "20000", "--k-d", "25000"], "constant leg stiffness"),  # names it
         (["--m", "-80"], "--m must be finite and positive, got -80"),
-        (["--angle", "2.0"], "--angle must satisfy"),
+        (["--angle", "2.0"], "--angle must lie in (-pi/2, pi/2)"),
         (["--map", "gravity-type2", "--option", "reading=sideways"], "'mean', 'report'"),
         (["--map", "gravity-type2", "--option", "nonsense=1"], "its options: reading"),
         (["--map", "gravity-type2", "--option", "iterations=2.5"], "iterations"),

@@ -228,6 +228,25 @@ def test_the_bottom_stage_removes_the_compression_halfs_error():
         slipmaps.BottomDeadbeat("exact-compression", P)
 
 
+def test_the_pages_bottom_stage_example_reaches_what_its_comment_says():
+    """docs/control_planning.md's BottomDeadbeat line asked for 1.0 m and 4.9 m/s from its bottom
+    and got UNREACHABLE at the k_d bound without a word; it now aims at the height (one control,
+    one target) and reaches, and the both-target call from that bottom is the UNREACHABLE it says."""
+    from documents import section_block
+
+    block = section_block("docs/control_planning.md", "Control: deadbeat steps, runs on the exact plant")
+    (line,) = [x for x in block.splitlines() if x.startswith("up = slipmaps.BottomDeadbeat(")]
+    params = slipmaps.SlipParams(m=80.0, l0=1.0, k=20_000.0)  # docs/getting_started.md's
+    down = slipmaps.half_stance("iterative-compression", params, (1.0, -1.5, 0.35, -4.5))
+    scope = {"slipmaps": slipmaps, "params": params, "down": down}
+    exec(line, scope)
+    up = scope["up"]
+    assert up.status == PlanStatus.REACHED and abs(up.apex_height - 0.97) < 1e-9  # measured 7e-10
+    assert "# REACHED, 30061 N/m" in block and round(up.k_d) == 30061
+    both = slipmaps.BottomDeadbeat("iterative-decompression", params).plan(down.end, 1.0, 4.9)
+    assert both.status == PlanStatus.UNREACHABLE and both.k_d == 40_000.0  # at the bound 2 k_c
+
+
 def test_a_warm_started_solve_takes_few_generated_jacobians():
     """The generated Jacobian once, then Broyden's updates (a fresh one when a line search fails):
     measured 2 Jacobians and 10 apex evaluations from 1e-3 rad away (1 and 8-12 from 1e-2 to

@@ -114,7 +114,7 @@ def test_two_stage_plant_halves_compose_to_the_whole_stance():
     pl = Plant("exact", P)
     args = (np.array([1.0, 1.1]), np.array([5.0, 3.0]), np.array([0.36, 0.3]), np.zeros(2))
     whole = pl.step(*args, P.k_c, 25_000.0)
-    halves = pl.decompress(pl.compress(*args, P.k_c), P.k_c, 25_000.0)
+    halves = pl.decompress(pl.compress(*args, P.k_c), 25_000.0)
     assert np.max(np.abs(halves.next_apex_height - whole.next_apex_height)) < 1e-13  # measured 5e-15
 
 
@@ -174,12 +174,24 @@ def test_the_path_is_continuous_and_lands_the_foot_on_the_terrain(example_runs):
         ({"targets": {"speed": "fast"}}, "[targets] speed: must be a number, a list or a ramp"),
         ({"terrain": {"kind": "hills"}}, "[terrain] kind: must be one of flat, steps, stairs, random"),
         ({"terrain": {"kind": "flat", "rise": 0.1}}, "[terrain] rise: is not a key of kind 'flat'"),
-        ({"mismatch": {"mass": -1.5}}, "[mismatch] mass: a fraction above -1"),
-        ({"model": "geyr"}, "model:"),
-        ({"control": {"controls": ["angle"]}}, "[control] controls: unknown control 'angle'"),
-        ({"control": {"bounds": {"k_d": [1.0]}}}, "[control.bounds] k_d: must be a pair"),
-        ({"params": {"m": -80}}, "[params] m: must be positive"),
-        ({"steps": 0}, "steps: must be a whole number >= 1"),
+        ({"mismatch": {"mass": -1.5}}, "[mismatch] mass: must be a fraction above -1"),
+        ({"model": "geyr"}, "model: unknown map 'geyr'"),
+        ({"control": {"controls": ["angle"]}}, "[control] controls: has an unknown control 'angle'"),
+        ({"control": {"bounds": {"k_d": [1.0]}}}, "[control] bounds['k_d'] must be a pair"),
+        ({"params": {"m": -80}}, "[params] m: must be finite and positive, got -80"),
+        ({"params": {"k": 0}}, "[params] k: must be finite and positive, got 0"),
+        ({"params": {"l0": 0.6, "q_r_td": 0.7}}, "[params] q_r_td: must not exceed the rest length l0=0.6"),
+        ({"steps": 0}, "steps: must be a whole number >= 1, got 0"),
+        ({"steps": 2.5}, "steps: must be a whole number >= 1, got 2.5"),
+        ({"control": {"tol": 0}}, "[control] tol: must be positive, got 0"),
+        ({"noise": {"speed": -0.1}}, "[noise] speed: must not be negative, got -0.1"),
+        ({"control": {"aim": "up"}}, "[control] aim: must be one of both, height, speed, got 'up'"),
+        ({"control": {"decompression": "geyer"}}, "[control] decompression: "),
+        (
+            {"control": {"policy": "retraction", "retraction_rate": 5.0}},
+            "[control] retraction_rate: must lie in [-3.13209, 3.13209] rad/s (|retraction_rate| <= "
+            "sqrt(g_f/q_r_td)",
+        ),
     ],
 )
 def test_a_bad_scenario_is_one_line_naming_the_key(data, needle):
@@ -187,6 +199,7 @@ def test_a_bad_scenario_is_one_line_naming_the_key(data, needle):
         scenarios.from_dict(data, where="s.toml")
     message = str(err.value)
     assert needle in message and "\n" not in message and message.startswith("s.toml: ")
+    assert message.count("s.toml") == 1  # the file named once (a [params] error named it twice)
 
 
 def test_a_scenario_file_round_trips_its_profiles():
@@ -203,7 +216,8 @@ def test_the_cli_runs_a_scenario_prints_its_table_and_writes_the_figure(tmp_path
     assert main(["run", str(EXAMPLES / "stairs.toml"), "--figure", str(figure)]) == 0
     out = capsys.readouterr().out
     assert "stairs up and down: model iterative, plant exact; completed 14 steps" in out
-    assert out.count("REACHED") == 14 and figure.stat().st_size > 10_000
+    assert out.count(" REACHED ") == 14 and figure.stat().st_size > 10_000  # a row per step
+    assert out.count("plan REACHED: ") == 1  # and the status's meaning once, under the table
     assert main(["run", str(EXAMPLES / "stop.toml"), "--no-figure", "--json", "--steps", "3"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert len(data["steps"]) == 3 and data["fell"] is False
@@ -262,9 +276,10 @@ def test_a_gif_is_written_frame_by_frame_with_a_progress_bar(tmp_path, capsys):
 
 
 def test_control_imports_only_the_layers_below_it_and_nothing_below_imports_it():
-    """control uses api, exact, analysis (and the generated kernels); only control itself, report
-    (the report's sections 6-8 read the control evaluation), export (the C solver's bindings read
-    its settings record) and cli import control."""
+    """control uses api, exact, analysis, robot (the MuJoCo robot a plant adapter drives; the robot
+    never imports control) and the generated kernels; only control itself, report (the report's
+    sections 6-8 read the control evaluation), export (the C solver's bindings read its settings
+    record), studies (the robot study runs the controllers), cli and the public API import control."""
     runtime = ROOT / "runtime"
     for path in runtime.rglob("*.py"):
         layer = path.relative_to(runtime).parts[0]
@@ -279,10 +294,12 @@ def test_control_imports_only_the_layers_below_it_and_nothing_below_imports_it()
                 continue
             for name in names:
                 uses_control = "control" in name.split(".") and ("runtime" in name or name.startswith("."))
-                if layer not in ("control", "report", "export", "cli", "public"):
+                if layer not in ("control", "report", "export", "studies", "cli", "public"):
                     assert not uses_control, f"{path} imports {name}"
                 if layer == "control" and name.startswith(".."):
-                    assert name.split(".")[2] in ("api", "exact", "analysis"), f"{path} imports {name}"
+                    assert name.split(".")[2] in ("api", "exact", "analysis", "robot"), (
+                        f"{path} imports {name}"
+                    )
 
 
 # --- the evaluation record ------------------------------------------------------------------------
@@ -368,3 +385,189 @@ def test_a_run_to_pandas_has_a_row_per_step_and_the_states_by_coordinate(example
     assert (df["plant_status"] == "OK").all() and (df["plan_status"] == "REACHED").all()
     assert np.array_equal(df["next_apex_speed"].to_numpy(), r.column("next_apex_speed"))
     assert df["liftoff_q_th"].to_numpy().tolist() == [s["liftoff"][2] for s in r.steps]
+
+
+# --- a scenario's own leg, its inputs checked up front, honest plan statuses, plain figures ---------
+
+#: The issue's small robot: 30 kg, a 0.6 m leg, 9 kN/m; a speed-up from a 0.65 m apex.
+ROBOT = {"m": 30.0, "l0": 0.6, "k": 9000.0}
+ROBOT_RUN = {"steps": 4, "start": {"height": 0.65, "speed": 2.5}}
+ROBOT_TOML = """steps = 4
+start = { height = 0.65, speed = 2.5 }
+[targets]
+speed = { from = 2.5, to = 3.0, steps = 3 }
+[params]
+m = 30.0
+l0 = 0.6
+k = 9000.0
+"""
+
+
+def _robot_scenarios(tmp_path):
+    file = tmp_path / "robot.toml"
+    file.write_text(ROBOT_TOML)
+    ramp = {"speed": {"from": 2.5, "to": 3.0, "steps": 3}}
+    loaded = scenarios.load(file)
+    target = loaded.target_speed
+    return {
+        "toml": file,
+        "dict": {**ROBOT_RUN, "targets": ramp, "params": ROBOT},
+        "Scenario(params=dict)": scenarios.Scenario(
+            steps=4, start_height=0.65, start_speed=2.5, target_speed=target, params=ROBOT
+        ),
+        "HUMAN_RUNNER.with_": scenarios.Scenario(
+            steps=4, start_height=0.65, start_speed=2.5, target_speed=target, params=P.with_(**ROBOT)
+        ),
+    }
+
+
+def test_a_scenarios_leg_lengths_follow_its_own_l0_in_toml_and_python(tmp_path):
+    """`[params] l0 = 0.6` (and its Python forms) kept the human runner's 1 m touchdown and liftoff
+    lengths and failed; they follow the scenario's l0 as SlipParams' do, and the run completes
+    (measured: every step REACHED, the plant within 3.5e-6 m and 1.4e-5 m/s of the targets)."""
+    made = _robot_scenarios(tmp_path)
+    for how, sc in made.items():
+        r = slipmaps.run(sc)
+        p = r.scenario.params
+        assert (p.l0, p.q_r_td, p.q_r_lo, p.m, p.k_c, p.k_d) == (0.6, 0.6, 0.6, 30.0, 9000.0, 9000.0), how
+        assert not r.fell and len(r) == 4, how
+        assert {s["plan_status"] for s in r.steps} == {"REACHED"}, how
+        dh, dv = r.errors()
+        assert np.abs(dh).max() < 1e-5 and np.abs(dv).max() < 1e-4, how
+        assert r.column("target_speed")[-1] == pytest.approx(3.0)
+    assert main(["run", str(made["toml"]), "--no-figure"]) == 0
+    # a length given stays, and one above the scenario's l0 is refused naming the key, once
+    kept = scenarios.from_dict({"params": {**ROBOT, "q_r_td": 0.55}})
+    assert (kept.params.q_r_td, kept.params.q_r_lo) == (0.55, 0.6)
+    assert P.with_(q_r_td=0.9).with_(l0=0.95).q_r_td == 0.9  # not at the rest length: kept
+
+
+def _no_run(monkeypatch):
+    def refuse(*args, **kwargs):
+        raise AssertionError("a run started before its inputs were checked")
+
+    monkeypatch.setattr(runs, "_Controller", refuse)
+
+
+@pytest.mark.parametrize(
+    ("overrides", "error", "needle"),
+    [
+        ({"steps": 2.5}, ValueError, "scenario 'run': steps must be a whole number >= 1, got 2.5"),
+        ({"steps": -3}, ValueError, "scenario 'run': steps must be a whole number >= 1, got -3"),
+        ({"steps": 0}, ValueError, "scenario 'run': steps must be a whole number >= 1, got 0"),
+        ({"steps": True}, ValueError, "steps must be a whole number >= 1, got True"),
+        ({"stepz": 3}, TypeError, "unknown scenario field 'stepz' (did you mean steps?); the fields: name,"),
+        ({"start_height": -1.0}, ValueError, "start_height must not be negative, got -1.0"),
+        ({"start_speed": "5"}, ValueError, "start_speed must be a finite number, got '5'"),
+        ({"known": -1}, ValueError, "known must be a whole number >= 0, got -1"),
+        ({"model": "bogus"}, ValueError, "model: unknown map 'bogus'; the maps are: geyer"),
+        ({"aim": "up"}, ValueError, "aim must be one of both, height, speed, got 'up'"),
+        ({"tol": 0.0}, ValueError, "tol must be positive, got 0.0"),
+        ({"noise_speed": math.nan}, ValueError, "noise_speed must be a finite number, got nan"),
+        ({"mismatch_mass": -1.0}, ValueError, "mismatch_mass must be a fraction above -1"),
+        ({"two_stage": 1}, ValueError, "two_stage must be true or false, got 1"),
+        ({"fixed_angle": 2.0}, ValueError, "fixed_angle must lie in (-pi/2, pi/2), got 2.0"),
+        ({"controls": ("angle",)}, ValueError, "controls has an unknown control 'angle'; the controls are"),
+        ({"bounds": {"k_d": (1.0,)}}, ValueError, "scenario 'run': bounds['k_d'] must be a pair"),
+        ({"target_speed": (5.0,) * 3}, ValueError, "target_speed has 3 values for 10 steps"),
+        ({"params": 3}, ValueError, "params must be a SlipParams or a table of its fields, got 3"),
+        ({"params": {"k": 0}}, ValueError, "SlipParams.k must be finite and positive, got 0"),
+        ({"policy": "retraction", "retraction_rate": 5.0}, ValueError, "retraction_rate must lie in [-3.1"),
+        ({"policy": "retraction", "retraction_rate": 1e9}, ValueError, "sqrt(g_f/q_r_td): the foot's"),
+        ({"seeds": [0, 1]}, ValueError, "seeds must be 1 whole numbers >= 0 (one per run), got [0.0, 1.0]"),
+        ({"grounds": np.full((1, 10), np.nan)}, ValueError, "grounds must be finite, got nan"),
+        ({"scalar": "yes"}, TypeError, "scalar must be True, False or None, got 'yes'"),
+    ],
+)
+def test_run_overrides_are_checked_before_any_work_in_one_line_each(overrides, error, needle, monkeypatch):
+    _no_run(monkeypatch)
+    for call in (slipmaps.run, slipmaps.run_batch):
+        with pytest.raises(error) as err:
+            call(**overrides)
+        message = str(err.value)
+        assert needle in message and "\n" not in message, message
+
+
+def test_the_retraction_rate_is_checked_against_the_maps_range_wherever_it_enters(tmp_path, capsys):
+    """API, TOML and the CLI flag refuse a rate beyond |rate| <= sqrt(g_f/q_r_td) (the flight
+    kernels' guard, derive/params.py's row) with the range for the scenario's parameters; a
+    scenario with a shorter leg has a wider range (sqrt(9.81/0.6) = 4.04 rad/s)."""
+    robot = scenarios.Scenario(params=ROBOT, policy="retraction", retraction_rate=-4.0)  # within
+    assert robot.retraction_rate == -4.0
+    with pytest.raises(ValueError, match=r"retraction_rate must lie in \[-4\.04351, 4\.04351\] rad/s"):
+        robot.with_(retraction_rate=-4.1)
+    file = tmp_path / "fast.toml"
+    file.write_text('steps = 2\n[control]\npolicy = "retraction"\nretraction_rate = 5.0\n')
+    for argv in (["run", str(file)], ["run", str(EXAMPLES / "stairs.toml"), "--retraction-rate", "1e9"]):
+        assert main([*argv, "--no-figure"]) == 2
+        err = capsys.readouterr().err.strip()
+        assert "must lie in [-3.13209, 3.13209] rad/s" in err and "\n" not in err, err
+    assert main(["run", str(file), "--no-figure"]) == 2
+    assert f"{file}: [control] retraction_rate: must lie in" in capsys.readouterr().err
+    assert main(["run", str(EXAMPLES / "stairs.toml"), "--retraction-rate", "-5", "--no-figure"]) == 2
+    assert "error: --retraction-rate must lie in [-3.13209" in capsys.readouterr().err
+
+
+def test_a_binary_scenario_file_is_named(tmp_path, capsys):
+    file = tmp_path / "photo.toml"
+    file.write_bytes(bytes(range(128, 256)))
+    assert main(["run", str(file), "--no-figure"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == f"slipmaps run: error: {file}: not a TOML file: not UTF-8 text (byte 0)"
+
+
+def test_a_step_planned_on_the_assumed_flat_ground_says_blind_not_reached():
+    """Unknown ground (known = 0): the apex-set policies plan on flat ground, so a step whose true
+    ground differs is BLIND (the issue's run said REACHED while the plant missed by up to 166 mm);
+    on known ground, or on flat ground unknown, a reached step is REACHED."""
+    blind = slipmaps.run(EXAMPLES / "blind_running.toml", steps=4, policy="retraction", retraction_rate=-1.0)
+    moved = blind.column("ground") != 0.0
+    assert moved.all()  # the filter below is not empty: every touchdown off the flat ground
+    assert [s["plan_status"] for s in blind.steps] == ["BLIND"] * 4
+    dh, _ = blind.errors()
+    assert np.abs(dh).max() > 0.05  # measured 124 mm by step 3: what BLIND warns of
+    assert "plan BLIND: the model's next apex on the target on the flat ground the controller assumed" in (
+        blind.table()
+    )
+    flat = slipmaps.run(steps=2, known=0, policy="retraction", retraction_rate=-1.0)
+    assert [s["plan_status"] for s in flat.steps] == ["REACHED"] * 2
+    known = slipmaps.run(EXAMPLES / "rough_ground.toml", steps=3, policy="retraction", retraction_rate=-1.0)
+    assert [s["plan_status"] for s in known.steps] == ["REACHED"] * 3
+    assert np.abs(known.errors()[0]).max() < 1e-5  # measured 4e-6 m
+    assert set(runs.PLAN_NAMES.values()) - {"-"} == set(runs.PLAN_MEANINGS)
+
+
+def test_run_figures_label_their_ticks_with_plain_values(tmp_path, monkeypatch):
+    """A run that holds 1 m within a few micrometres drew its apex panel as '1e-6 + 9.9999e-1'; every
+    axis now labels plain values (api/paths.py's plain_ticks, in the one save_figure)."""
+    from slipmaps.runtime.api import paths
+    from slipmaps.runtime.control.figures import run_figure
+
+    drawn = []
+    save = paths.save_figure
+
+    def spy(fig, path, **kw):
+        out = save(fig, path, **kw)
+        drawn.append(fig)
+        return out
+
+    monkeypatch.setattr(paths, "save_figure", spy)
+    r = slipmaps.run(steps=3)
+    heights = r.column("next_apex_height")
+    assert 0.0 < np.ptp(heights) < 1e-4 and abs(heights.mean() - 1.0) < 1e-4  # what drew the offset
+    run_figure(r, tmp_path / "run.png")
+    (fig,) = drawn
+    texts = [a.get_offset_text().get_text() for ax in fig.axes for a in (ax.xaxis, ax.yaxis)]
+    assert len(texts) == 8 and texts == [""] * 8
+    labels = [t.get_text() for t in fig.axes[1].yaxis.get_ticklabels() if t.get_text()]
+    assert labels and all(abs(float(t.replace("\u2212", "-")) - 1.0) < 1e-3 for t in labels), labels
+
+
+def test_every_figure_is_saved_through_the_one_helper():
+    """Every figure file is written by api/paths.py's save_figure (plain ticks, one error line)."""
+    calls = [
+        path.relative_to(ROOT).as_posix()
+        for path in (ROOT / "runtime").rglob("*.py")
+        if ".savefig(" in path.read_text()
+    ]
+    assert calls == ["runtime/api/paths.py"]

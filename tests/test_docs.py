@@ -109,3 +109,30 @@ def test_a_moved_readme_section_is_on_its_page_once(heading, page):
 def test_an_included_readme_heading_is_there_once(page, option, heading):
     readme = (ROOT / "README.md").read_text()
     assert re.findall(rf"^{re.escape(heading)}$", readme, flags=re.M) == [heading], (page, option)
+
+
+def test_the_readmes_extras_table_lists_every_extra_of_the_package():
+    """The table lacked `pandas` (the `to_pandas` docstrings ask for it): every extra of
+    pyproject.toml is a row, and no row names an extra the package does not have."""
+    try:
+        import tomllib
+    except ImportError:  # Python 3.10
+        import tomli as tomllib
+    extras = set(tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"])
+    table = (ROOT / "README.md").read_text().split("| extra | for |\n", 1)[1].split("\n\n", 1)[0]
+    rows = set(re.findall(r"^\| `([\w-]+)` \|", table, flags=re.M))
+    assert "pandas" in extras and rows == extras
+
+
+def test_the_docs_speak_of_the_project_not_of_sessions():
+    """The changelog said "this session" (four places) and a performance page "the editor session":
+    the docs speak of the project and the machine."""
+    pages = [ROOT / "README.md", *sorted(DOCS.glob("*.md"))]
+    assert len(pages) > 20
+    said = [
+        f"{page.name}:{n}"
+        for page in pages
+        for n, line in enumerate(page.read_text().splitlines(), 1)
+        if re.search(r"\bsessions?\b", line, flags=re.I)
+    ]
+    assert said == []

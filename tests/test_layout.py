@@ -3,9 +3,9 @@
 Read from the sources (``ast``), every import counted, also those inside functions:
 
 - a module of ``runtime/<package>/`` imports only from packages at its level or below:
-  ``api`` < ``exact`` < ``analysis``, ``sweep``, ``studies``, ``control`` < ``report``, ``export`` < ``cli``
-  (the top-level package ``runtime/public`` sits above them all); a backend is found by name from
-  the index, not imported by the API;
+  ``api`` < ``exact``, ``robot`` < ``analysis``, ``sweep``, ``studies``, ``control`` < ``report``,
+  ``export`` < ``cli`` (the top-level package ``runtime/public`` sits above them all); a backend is
+  found by name from the index, not imported by the API;
 - the modules' import graph has no cycle;
 - no module imports another's private name (``from .x import _y``);
 - the runtime never imports ``derive`` but its plain-data parameter table (``derive/params.py``).
@@ -23,6 +23,7 @@ RUNTIME = ROOT / "runtime"
 RANK = {
     "api": 0,
     "exact": 1,
+    "robot": 1,
     "analysis": 2,
     "sweep": 2,
     "studies": 2,

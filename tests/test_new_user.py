@@ -371,6 +371,50 @@ def test_slip_params_name_k_when_k_set_both():
         slipmaps.SlipParams(k=-5)
 
 
+@pytest.mark.parametrize(
+    ("call", "needle"),
+    [
+        (lambda: slipmaps.SlipParams(mass=3), "SlipParams: got an unexpected keyword argument 'mass'"),
+        (lambda: slipmaps.SlipParams(80, 1, 2e4, 4), "SlipParams: too many positional arguments"),
+        (lambda: slipmaps.HUMAN_RUNNER.with_(mass=3), "SlipParams has no field(s) mass"),
+    ],
+)
+def test_an_unknown_slip_params_argument_names_slip_params_and_its_arguments(call, needle):
+    """`SlipParams(mass=3)` said only "got an unexpected keyword argument 'mass'"."""
+    with pytest.raises(TypeError) as err:
+        call()
+    message = str(err.value)
+    assert message.startswith(needle) and "\n" not in message, message
+    assert message.endswith("; its arguments: m, l0, k, k_c, k_d, g_s, g_f, q_r_td, q_r_lo"), message
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        (["--speed", "nan"], "--speed must be finite, got nan"),
+        (["--speed", "5", "inf"], "--speed must be finite, got inf"),
+        (["--apex-height", "-1"], "--apex-height must not be negative, got -1.0"),
+        (["--energy", "0", "--speed", "5"], "--energy must be positive, got 0.0"),
+        (["--energy-speed", "nan", "--angle", "0.4"], "--energy-speed must be finite, got nan"),
+        (["--energy", "900", "--angle", "2"], "--angle must lie in (-pi/2, pi/2) (the leg above the ground)"),
+    ],
+)
+def test_gait_names_the_flag_of_a_bad_number(argv, needle, nothing_runs, capsys):
+    """`slipmaps gait --speed nan` said "speed must be finite": the flag is --speed."""
+    assert main(["gait", *argv]) == 2
+    _one_line_error(capsys, f"slipmaps gait: error: {needle}")
+
+
+def test_gait_has_no_figure_like_run(tmp_path, capsys):
+    """`--no-figure`, as `run`'s: no figure, whatever --figure says (before: an unknown flag)."""
+    figure = tmp_path / "region.png"
+    argv = ["gait", "--no-exact", "--map", "geyer", "--speed", "5", "--no-progress", "--figure", str(figure)]
+    assert main([*argv, "--no-figure"]) == 0
+    out = capsys.readouterr().out
+    assert "wrote" not in out and not figure.exists()
+    assert "geyer" in out and "fixed point" not in out.split("\n")[2]  # the row found the gait
+
+
 # --- defaults that scale with the leg -------------------------------------------------------------
 
 

@@ -112,3 +112,34 @@ def test_rates_beyond_the_concave_range_or_past_the_horizontal_are_refused():
     )
     r = slipmaps.apex_return("geyer", P, 1.3, 5.0, 1.2, retraction_rate=3.0)
     assert r.status == slipmaps.Status.NO_TOUCHDOWN, r.message
+
+
+@pytest.mark.parametrize(
+    "params",
+    [P, slipmaps.ROBOT_HOPPER, P.with_(q_r_td=0.9, g_f=9.0)],
+    ids=["human", "hopper", "short-touchdown"],
+)
+def test_the_rates_declared_range_is_the_kernels_and_the_calls_say_it(params):
+    """derive/params.py's row declares |rate| <= sqrt(g_f/q_r_td) once: the flight kernels guard it
+    (INVALID_INPUT just beyond, not just within), the Python layer reads the same bound
+    (validate.limit), a scalar call's INVALID_INPUT message names the input and its range, and a
+    deadbeat plan refuses it in one line (it said only "an input is not finite or outside its
+    valid range")."""
+    from slipmaps.runtime.api.validate import limit
+
+    bound = limit("retraction_rate", params)
+    assert bound == pytest.approx(math.sqrt(params.g_f / params.q_r_td), rel=1e-15)
+    name = "geyer" if params.constant_stiffness else "geyer-vs"
+    h, th = 1.0 * params.l0, 0.35
+    within = slipmaps.apex_return(name, params, h, 0.0, th, retraction_rate=-0.999 * bound)
+    assert within.status != slipmaps.Status.INVALID_INPUT, within.message
+    text = f"[{-bound:.6g}, {bound:.6g}] rad/s (|retraction_rate| <= sqrt(g_f/q_r_td)"
+    for call in (slipmaps.apex_return, slipmaps.apex_return_jacobian):
+        r = call(name, params, h, 0.0, th, retraction_rate=-1.001 * bound)
+        assert r.status == slipmaps.Status.INVALID_INPUT
+        assert r.message.startswith(f"retraction_rate={-1.001 * bound!r} is outside its range {text}"), (
+            r.message
+        )
+    with pytest.raises(ValueError, match=r"^retraction_rate must lie in \[") as err:
+        slipmaps.deadbeat("iterative", params, h, 1.0, h, 1.0, retraction_rate=2 * bound)
+    assert text in str(err.value) and "\n" not in str(err.value)

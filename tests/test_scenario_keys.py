@@ -16,6 +16,9 @@ DOCS = Path(__file__).resolve().parent.parent / "docs"
 def test_every_accepted_key_is_documented_and_no_other():
     accepted = {(t, k) for t, keys in KEYS.items() if t != "params" for k in keys}
     assert accepted == set(KEY_DOCS)
+    # in the loader's order too (the reference is written in KEY_DOCS' order)
+    documented = [(t, k) for t, keys in KEYS.items() if t != "params" for k in keys]
+    assert documented == list(KEY_DOCS) and list(KEYS)[-1] == "params"
     assert all(all(cell is not None for cell in doc[:4]) and doc[3] for doc in KEY_DOCS.values())
 
 

@@ -13,7 +13,7 @@ from functools import cache
 
 import sympy as sp
 
-from ..catalog import APEX_ARGS, DIRECTION, PARAMS, POLAR
+from ..catalog import APEX_ARGS, DIRECTION, PARAMS, POLAR, limit
 from ..ir import Arg, Field, Group, Guard, Iterate, Kernel, Stage, Switch, positive, real, sym
 from ..symbols import (
     b_x,
@@ -230,13 +230,7 @@ def flight_kernels() -> dict[str, Kernel]:
             ),
             Stage(
                 ((t0, atd["t0"]),),
-                (
-                    Guard(
-                        real(INPUTS["retraction_rate"].symbol) ** 2 * real(q_r_td) <= real(g_f),
-                        "INVALID_INPUT",
-                        "|retraction_rate| <= sqrt(g_f/q_r_td): the foot's height concave in time",
-                    ),
-                ),
+                (limit("retraction_rate"),),  # |rate| <= sqrt(g_f/q_r_td) (derive/params.py's row)
                 comment="the descent time of a leg held still (section 2.1)",
             ),
             Stage(

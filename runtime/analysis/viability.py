@@ -46,7 +46,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..api.params import SlipParams
-from ..api.validate import real_array
+from ..api.validate import limit, limit_text, real_array
 from .viability_kernel import OUTSIDE, cells, viable_set
 from .viability_map import Grids, check_memory, speeds_on_energy, transition
 
@@ -253,12 +253,8 @@ def _grids(params, apex_height, touchdown_angle, apex_speed, energy, k_d, retrac
         actions["k_d"] = grid("k_d", k_d, positive=True)
     if retraction_rate is not None:
         actions["retraction_rate"] = grid("retraction_rate", retraction_rate)
-        bound = math.sqrt(params.g_f / params.q_r_td)  # the maps' domain of the rate (flight kernels)
-        if np.any(np.abs(actions["retraction_rate"]) > bound):
-            raise ValueError(
-                f"retraction_rate must lie within +-sqrt(g_f/q_r_td) = {bound:.4g} rad/s (the maps' domain: "
-                "the foot's height concave in time)"
-            )
+        if np.any(np.abs(actions["retraction_rate"]) > limit("retraction_rate", params)):  # the maps' range
+            raise ValueError(f"retraction_rate must lie in {limit_text('retraction_rate', params)}")
     return Grids(states, actions, energy)
 
 

@@ -26,6 +26,8 @@ def read_toml(path: str | Path) -> dict:
         raise ValueError(f"cannot read {path}: {exc.strerror}") from None
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML: {exc}") from None
+    except UnicodeDecodeError as exc:  # a binary file: TOML is UTF-8 text
+        raise ValueError(f"{path}: not a TOML file: not UTF-8 text (byte {exc.start})") from None
 
 
 def rounded(x, digits: int = 6):

@@ -48,7 +48,7 @@ from .inputs import apex_signature
 from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
 from .params import SlipParams
 from .results import GROUPS, BatchResult, Result, renamed
-from .validate import polar_state
+from .validate import outside_limits, polar_state
 
 __all__ = [
     "Jacobian",
@@ -195,7 +195,7 @@ def _mask_rest_length(call: Call, inputs, jac: np.ndarray) -> None:
         jac[..., inputs.index("q_r_td")] = math.nan
 
 
-def _jacobian(call: Call, role: str, status: Status, row, point) -> Jacobian:
+def _jacobian(call: Call, role: str, status: Status, row, point, message: str | None = None) -> Jacobian:
     outputs, inputs = _names(call, role)
     values, jac = _split(np.array(row, dtype=float), len(outputs), len(inputs))
     jac = jac.copy()
@@ -208,7 +208,8 @@ def _jacobian(call: Call, role: str, status: Status, row, point) -> Jacobian:
     jac.setflags(write=False)
     kind = role.removesuffix("_jacobian")
     named = dict(zip(outputs, map(float, values), strict=True))
-    return Jacobian(call.info.name, kind, status, MESSAGES[int(status)], named, outputs, inputs, jac, point)
+    message = message if message and status != Status.OK else MESSAGES[int(status)]
+    return Jacobian(call.info.name, kind, status, message, named, outputs, inputs, jac, point)
 
 
 def stance_jacobian(name: str, params: SlipParams, touchdown, **options) -> Jacobian:
@@ -226,9 +227,11 @@ def apex_return_jacobian(name: str, params: SlipParams, given: dict, **options) 
     the apex height and speed, the touchdown angle, the ground and the stiffness (module docstring)."""
     call = Call.of(name, params, options)
     inputs, point = apex_inputs(given)
-    status, row, _ = call.scalar("apex_return_jacobian", inputs)
+    status, row, message = call.scalar("apex_return_jacobian", inputs)
+    if status == Status.INVALID_INPUT and message is None:  # an input outside its range: which
+        message = outside_limits(params, point)
     point["options"] = dict(call.options)
-    return _jacobian(call, "apex_return_jacobian", status, row, point)
+    return _jacobian(call, "apex_return_jacobian", status, row, point, message)
 
 
 def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape, given) -> JacobianBatch:

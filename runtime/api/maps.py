@@ -23,8 +23,9 @@ Every call fills the kernels' arguments by name (:mod:`.calls`): no function her
 argument order or branches on a map; the exact map is one like the others. Options are keywords
 (``iterations=20``, ``reading="mean"``; ``slipmaps maps`` lists them). A scalar call raises
 ValueError for an invalid argument (naming it); a state outside the map's domain is a result with a
-status, never an exception. Conventions (docs/conventions.md): SI units, leg angle from the vertical,
-counterclockwise positive.
+status, never an exception (``INVALID_INPUT`` for a retraction rate beyond the range the parameters
+give it: its message names the input and the range). Conventions (docs/conventions.md): SI units,
+leg angle from the vertical, counterclockwise positive.
 """
 
 from __future__ import annotations
@@ -40,7 +41,7 @@ from .index import maps
 from .inputs import apex_signature
 from .params import SlipParams
 from .results import BatchResult, Result
-from .validate import CHECKS, L0_SLACK, float_array, polar_state, real_array
+from .validate import CHECKS, L0_SLACK, float_array, outside_limits, polar_state, real_array
 
 __all__ = [
     "maps",
@@ -101,6 +102,8 @@ def apex_return(name: str, params: SlipParams, given: dict, **options) -> Result
     call = Call.of(name, params, options)
     inputs, point = apex_inputs(given)
     status, row, message = call.scalar("apex_return", inputs)
+    if status == Status.INVALID_INPUT and message is None:  # an input outside its range: which
+        message = outside_limits(params, point)
     point["options"] = dict(call.options)
     return _result(call, "apex_return", status, row, point, message)
 

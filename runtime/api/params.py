@@ -5,11 +5,12 @@ constant stiffness ``k``; ``k_c`` / ``k_d`` set the stiffness while the leg comp
 bottom) and after the bottom separately (report section 5). ``g_s`` is the gravitational
 acceleration during stance, ``g_f`` during flight (both positive numbers, pointing down).
 ``q_r_td`` and ``q_r_lo`` are the touchdown and liftoff leg lengths; both default to the rest
-length ``l0`` and must lie in (0, l0]. Every field defaults to the human runner
-(:data:`HUMAN_RUNNER`: 80 kg, 1 m leg, 20 kN/m). A value that is not a real number (a string, say)
-is a TypeError (:class:`ParamTypeError`, also a ValueError), one out of its domain a ValueError
-(:class:`ParamError`);
-both name the argument given (``k`` when ``k`` set both stiffnesses).
+length ``l0`` and must lie in (0, l0]; :meth:`SlipParams.with_` keeps a leg length that is at the
+rest length there, so ``HUMAN_RUNNER.with_(l0=0.6)`` has 0.6 m ones. Every field defaults to the
+human runner (:data:`HUMAN_RUNNER`: 80 kg, 1 m leg, 20 kN/m). A value that is not a real number (a
+string, say) is a TypeError (:class:`ParamTypeError`, also a ValueError), one out of its domain a
+ValueError (:class:`ParamError`); both name the argument given (``k`` when ``k`` set both
+stiffnesses). An unknown argument is a TypeError naming ``SlipParams`` and its arguments.
 """
 
 from __future__ import annotations
@@ -83,7 +84,10 @@ class SlipParams:
     __slots__ = (*FIELDS, "_k", "_h")
 
     def __init__(self, *args, **kwargs) -> None:
-        bound = _SIGNATURE.bind(self, *args, **kwargs)
+        try:
+            bound = _SIGNATURE.bind(self, *args, **kwargs)
+        except TypeError as exc:  # an unknown or repeated argument: name the class and its arguments
+            raise TypeError(f"SlipParams: {exc}; its arguments: {', '.join(_ARGUMENTS)}") from None
         bound.apply_defaults()
         given = dict(bound.arguments)
         given.pop("self")
@@ -166,15 +170,24 @@ class SlipParams:
         return self.k_c
 
     def with_(self, **changes: float) -> SlipParams:
-        """A copy with some fields changed (validated again); ``k=`` sets both stiffnesses."""
+        """A copy with some fields changed (validated again); ``k=`` sets both stiffnesses. A leg
+        length not given that is at its rest length follows it (``with_(l0=0.6)`` of a 1 m leg at
+        rest lengths has 0.6 m ones), as a length not given to :class:`SlipParams` does."""
         values = self.as_dict()
+        unknown = sorted(set(changes) - set(values) - set(ALIASES))
+        if unknown:
+            raise TypeError(
+                f"SlipParams has no field(s) {', '.join(unknown)}; its arguments: {', '.join(_ARGUMENTS)}"
+            )
         for alias, a in ALIASES.items():
             if alias in changes:
                 for n in a["sets"]:
                     values.pop(n)
-        unknown = sorted(set(changes) - set(values) - set(ALIASES))
-        if unknown:
-            raise TypeError(f"SlipParams has no field(s) {', '.join(unknown)}")
+        for name in FIELDS:
+            rest = _ROWS[name]["default"]  # "l0" for a leg length
+            if isinstance(rest, str) and rest in changes and name not in changes:
+                if values[name] == values[rest]:
+                    values.pop(name)  # at the rest length: defaults to the new one
         return SlipParams(**{**values, **changes})
 
     def as_dict(self) -> dict[str, float]:
@@ -191,6 +204,8 @@ class SlipParams:
 
 
 _SIGNATURE = _signature()
+#: The arguments of :class:`SlipParams`, in its signature's order (for the messages).
+_ARGUMENTS = tuple(p for p in _SIGNATURE.parameters if p != "self")
 SlipParams.__init__.__signature__ = _SIGNATURE
 
 

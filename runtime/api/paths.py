@@ -36,12 +36,27 @@ def writing(path: str | os.PathLike, what: str | None = None) -> Iterator[Path]:
         raise ValueError(f"{label}: {exc.strerror or exc}") from None
 
 
+def plain_ticks(fig) -> None:
+    """Every linear axis of ``fig`` labels its ticks with their values, never as an offset plus
+    differences (matplotlib writes an apex height that varies by 1e-6 about 1 m as ``1e-6 +
+    9.9999e-1``)."""
+    from matplotlib.ticker import ScalarFormatter
+
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            formatter = axis.get_major_formatter()
+            if isinstance(formatter, ScalarFormatter):
+                formatter.set_useOffset(False)
+
+
 def save_figure(fig, path: str | os.PathLike, dpi: int = 110) -> Path:
-    """Save a matplotlib figure to ``path`` (an OSError as :func:`writing`'s ValueError) and close it,
-    whatever happened; returns the path."""
+    """Save a matplotlib figure to ``path`` with plain tick labels (:func:`plain_ticks`; an OSError
+    as :func:`writing`'s ValueError) and close it, whatever happened; returns the path. Every figure
+    the package writes goes through here."""
     import matplotlib.pyplot as plt
 
     try:
+        plain_ticks(fig)
         with writing(path):
             fig.savefig(path, dpi=dpi)
     finally:

@@ -6,7 +6,10 @@ A value that is not a real number (a string, bytes, None, a complex number) is a
 ``-1.0``, never ``np.float64(...)``).
 
 Kernels never raise (they return status codes); the Python layer checks its inputs here first so
-that a wrong argument fails loudly and clearly instead of turning into a NaN.
+that a wrong argument fails loudly and clearly instead of turning into a NaN. An input whose range
+depends on the parameters (its row's ``limit`` in ``derive/params.py``: the retraction rate's
+``|rate| <= sqrt(g_f/q_r_td)``) is checked by :func:`within_limit` where a run or a plan takes it;
+a map call leaves it to the kernel (``INVALID_INPUT``), and :func:`outside_limits` says why.
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from slipmaps.derive import params as _table
 
 from .numeric import NotANumber, is_real, num
 from .params import SlipParams
@@ -60,7 +64,7 @@ def positive(name: str, value: object) -> float:
 def leg_angle(name: str, value: object) -> float:
     x = real(name, value)
     if abs(x) >= math.pi / 2:
-        raise ValueError(f"{name} must satisfy |{name}| < pi/2 (leg above the ground), got {num(x)}")
+        raise ValueError(f"{name} must lie in (-pi/2, pi/2) (the leg above the ground), got {num(x)}")
     return x
 
 
@@ -79,6 +83,48 @@ CHECKS = {
     "leg_angle": leg_angle,
     "leg_length": leg_length,
 }
+
+
+#: The apex-return inputs whose range depends on the parameters (their row's ``limit`` in
+#: ``derive/params.py``, the kernels' guard): name -> the row.
+LIMITED = {r["name"]: r for r in _table.APEX_INPUTS if "limit" in r}
+
+
+def limit(name: str, params: SlipParams) -> float:
+    """The bound of input ``name`` for ``params`` (its row's ``limit``: ``|x| <= sqrt(a / b)``)."""
+    a, b = LIMITED[name]["limit"]["sqrt_ratio"]
+    values = params.values()
+    return math.sqrt(values[a] / values[b])
+
+
+def limit_text(name: str, params: SlipParams) -> str:
+    """The range of input ``name`` for ``params`` in words (6 significant digits): ``[-3.13209,
+    3.13209] rad/s (|retraction_rate| <= sqrt(g_f/q_r_td): the foot's height concave in time)``."""
+    row = LIMITED[name]
+    bound = limit(name, params)
+    a, b = row["limit"]["sqrt_ratio"]
+    why = row["limit"]["why"]
+    return f"[{-bound:.6g}, {bound:.6g}] {row['unit']} (|{name}| <= sqrt({a}/{b}): {why})"
+
+
+def within_limit(label: str, name: str, value: object, params: SlipParams) -> float:
+    """``value`` of input ``name`` (a finite number within its row's limit for ``params``); else
+    ValueError naming ``label`` (the argument, key or flag as given) and the range."""
+    x = real(label, value)
+    if abs(x) > limit(name, params):
+        raise ValueError(f"{label} must lie in {limit_text(name, params)}, got {num(x)}")
+    return x
+
+
+def outside_limits(params: SlipParams, inputs: dict) -> str | None:
+    """Why a call's INVALID_INPUT status came from the inputs (by public name) that their rows'
+    limits refuse, in one line naming each and its range; None when none is outside."""
+    bad = [
+        f"{name}={num(inputs[name])} is outside its range {limit_text(name, params)}"
+        for name in LIMITED
+        if name in inputs and is_real(inputs[name]) and abs(float(inputs[name])) > limit(name, params)
+    ]
+    return "; ".join(bad) or None
 
 
 def real_array(name: str, value: object) -> np.ndarray:

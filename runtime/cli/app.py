@@ -61,6 +61,7 @@ from ..api.paths import writable_dir, writable_file
 from ..api.progress import compile_notices
 from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import report as report_cli
+from . import robot as robot_cli
 from . import run as run_cli
 from . import sweep as sweep_cli
 from . import viability as viability_cli
@@ -272,6 +273,7 @@ def build_parser() -> argparse.ArgumentParser:
     sweep_cli.add_parser(sub)
     run_cli.add_parser(sub)
     report_cli.add_parser(sub)
+    robot_cli.add_parser(sub)
     viability_cli.add_parser(sub)
     return parser
 
@@ -475,6 +477,7 @@ def _run(argv: list[str] | None) -> int:
         "sweep": sweep_cli.run,
         "run": run_cli.run,
         "report": report_cli.run,
+        "robot": robot_cli.run,
         "viability": viability_cli.run,
     }
     try:
@@ -482,7 +485,7 @@ def _run(argv: list[str] | None) -> int:
         # terminal's standard error, for every command (runtime/api/progress.py)
         with compile_notices(enabled=False if getattr(args, "no_progress", False) else None):
             code = handlers[args.command](args)
-    except (ValueError, TypeError) as exc:
+    except (ValueError, TypeError, ImportError) as exc:  # ImportError: an optional extra is missing
         print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
         return 2
     except BrokenPipeError:

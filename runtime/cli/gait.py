@@ -7,7 +7,8 @@ By default the human runner at apex height 1 m and apex speeds 3-7 m/s, the exac
 (Seyfarth et al.'s setting). ``--json`` prints the fixed points as JSON; ``--figure PATH`` also
 draws the self-stable region (angle of attack against speed) of the maps listed (default: those
 of docs/stability.png; the exact one takes about 25 minutes with the ``solve_ivp`` simulator); its
-path is checked before any work.
+path is checked before any work; ``--no-figure`` draws none (as ``run``'s, it overrides ``--figure``).
+Every number of the line searched is checked under its flag before any work.
 
 The table labels its two stability numbers apart (:data:`~.gait.DEFINITIONS`): ``lambda 1-D``, the
 eigenvalue of the one-dimensional apex-height map on the energy level, and ``multipliers 2x2``, the
@@ -72,14 +73,32 @@ def add_parser(sub) -> argparse.ArgumentParser:
     )
     p.add_argument("--json", action="store_true", help="print the fixed points as JSON")
     p.add_argument("--figure", default=None, metavar="PATH", help="also draw the self-stable region to PATH")
+    p.add_argument("--no-figure", action="store_true", help="draw no figure (overrides --figure)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     return p
+
+
+def _checked(args) -> None:
+    """The line's flags checked under their names (one line naming the flag, before any work)."""
+    from ..api.validate import leg_angle, non_negative, positive, real
+
+    for flag, check in (
+        ("apex_height", non_negative),
+        ("speed", real),
+        ("energy", positive),
+        ("energy_speed", real),
+        ("angle", leg_angle),
+    ):
+        value = getattr(args, flag)
+        for x in value if isinstance(value, list) else () if value is None else (value,):
+            check(f"--{flag.replace('_', '-')}", x)
 
 
 def _lines(args, params) -> list[dict]:
     """The keyword arguments of fixed_points for each line the arguments ask for."""
     from ..studies.stability import energy_at_rest_height
 
+    _checked(args)
     energy = args.energy
     if args.energy_speed is not None:
         energy = energy_at_rest_height(params, args.energy_speed)
@@ -151,6 +170,8 @@ def run(args: argparse.Namespace) -> int:
     from .args import image_path, map_options, params_of
 
     params = params_of(args)
+    if args.no_figure:
+        args.figure = None
     extra = [get(n).name for n in (args.map or [])]
     names = ([] if args.no_exact else [EXACT]) + [n for n in extra if n != EXACT]
     if not names:

@@ -65,7 +65,8 @@ def add_parser(sub) -> argparse.ArgumentParser:
         type=float,
         default=None,
         metavar="RAD_PER_S",
-        help="the swing leg's rate after the apex (policy retraction; negative: retracting)",
+        help="the swing leg's rate after the apex (policy retraction; negative: retracting; within "
+        "+-sqrt(g_f/q_r_td), 3.13 rad/s for a 1 m leg)",
     )
     p.add_argument("--option", action="append", metavar="KEY=VALUE", help="an option of the model map")
     p.add_argument("--plant-option", action="append", metavar="KEY=VALUE", help="an option of the plant")
@@ -151,13 +152,35 @@ def _overrides(args: argparse.Namespace, sc) -> dict:
     if args.policy is not None:
         out["policy"] = args.policy
     if args.retraction_rate is not None:
-        out["retraction_rate"] = args.retraction_rate
+        from ..api.validate import within_limit
+
+        # the maps' range for the scenario's parameters (derive/params.py's row), named by the flag
+        rate = args.retraction_rate
+        out["retraction_rate"] = within_limit("--retraction-rate", "retraction_rate", rate, sc.params)
         out.setdefault("policy", "retraction" if sc.fixed_angle is None else sc.policy)
     if args.option:
         out["model_options"] = map_options(out.get("model", sc.model), args.option)
     if args.plant_option:
         out["plant_options"] = map_options(out.get("plant", sc.plant), args.plant_option)
     return out
+
+
+#: Frames per second of a robot's animation (``--gif`` with ``plant = "mujoco"``).
+GIF_FPS = 20.0
+
+
+def _animation(result, path) -> Path:
+    """The run's animation: the robot rendered by MuJoCo (a drawing without GL) from its logged
+    trajectory on the robot plant, else the SLIP's path drawn by matplotlib."""
+    plant = result.batch.plant
+    if hasattr(plant, "hoppers"):  # the robot plant
+        from ..robot.render import frames, write_gif
+
+        images, _ = frames(plant.hoppers[result.index], width=480, height=360)
+        return write_gif(images, path, plant.settings.log_rate)
+    from ..control.figures import animate
+
+    return animate(result, path)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -181,9 +204,12 @@ def run(args: argparse.Namespace) -> int:
 
         sc = resized(sc, overrides.pop("steps"))
     sc = sc.with_(**overrides)
+    from ..control.plant import ROBOT
     from ..control.runs import check
     from ..control.runs import run as run_scenario
 
+    if gif and sc.plant == ROBOT and not sc.plant_options.get("log_rate"):
+        sc = sc.with_(plant_options={**sc.plant_options, "log_rate": GIF_FPS})  # the robot logs its frames
     check(sc)  # the maps and their options, before any work
     if sys.stderr.isatty():  # the first steps wait for the kernels: say so rather than sit silent
         print(
@@ -208,9 +234,7 @@ def run(args: argparse.Namespace) -> int:
 
         written.append(str(run_figure(result, figure)))
     if gif:
-        from ..control.figures import animate
-
-        written.append(str(animate(result, gif)))
+        written.append(str(_animation(result, gif)))
     if args.json:
         data = result.as_dict()
         data["written"] = written

@@ -86,7 +86,7 @@ from ..api.names import NEXT, RENAMED, Renamed, public, warn_renamed
 from ..api.numeric import num
 from ..api.params import SlipParams
 from ..api.results import Result
-from ..api.validate import check_params, leg_angle, non_negative, real, real_array
+from ..api.validate import check_params, leg_angle, limit, non_negative, real, real_array, within_limit
 from . import compiled
 from .compiled import HEAD_AT as _HEAD
 from .compiled import N_HEAD
@@ -550,7 +550,10 @@ def _controls(call: Call, controls) -> tuple[str, ...]:
     return tuple(sorted(names, key=order.__getitem__))
 
 
-def _bounds(params: SlipParams, controls: tuple[str, ...], bounds) -> dict[str, tuple[float, float]]:
+def control_bounds(params: SlipParams, controls: tuple[str, ...], bounds) -> dict[str, tuple[float, float]]:
+    """The bounds of ``controls``: the defaults, with ``bounds`` (control -> (low, high)) over them;
+    ValueError (one line naming ``bounds[control]``) for a pair that is not one (every key of
+    ``bounds`` is checked, whether a control of ``controls`` or not)."""
     lo_k, hi_k = (f * params.k_c for f in DEFAULT_STIFFNESS_RANGE)
     out = {c: (DEFAULT_ANGLE_BOUNDS if c == "touchdown_angle" else (lo_k, hi_k)) for c in controls}
     for key, pair in dict(bounds or {}).items():
@@ -620,8 +623,9 @@ class Deadbeat:
         self.call = call
         self.name = call.info.name
         self.params = params
+        self._rate_limit = limit("retraction_rate", params)  # derive/params.py's row
         self.controls = _controls(call, controls)
-        self.bounds = _bounds(params, self.controls, bounds)
+        self.bounds = control_bounds(params, self.controls, bounds)
         if jacobian not in ("broyden", "newton"):
             raise ValueError(f"jacobian must be 'broyden' or 'newton', got {jacobian!r}")
         if not isinstance(budget, bool):
@@ -725,13 +729,16 @@ class Deadbeat:
         """One step (module docstring): the controls from the apex (h, v) over ``ground`` to the
         target (``target_height`` or ``target_speed`` may be None: not a target), the swing leg
         retracting at ``retraction_rate`` [rad/s] after the apex (the angle solved for is then the
-        one at the apex); the other keywords are starting (or fixed) values of the controls."""
+        one at the apex; ValueError beyond the maps' range, ``|rate| <= sqrt(g_f/q_r_td)``); the
+        other keywords are starting (or fixed) values of the controls."""
         h = _finite("apex_height", apex_height)
         if h < 0.0:
             non_negative("apex_height", h)
         v = _finite("apex_speed", apex_speed)
         gr = _finite("ground", ground)
         rate = _finite("retraction_rate", retraction_rate)
+        if abs(rate) > self._rate_limit:
+            within_limit("retraction_rate", "retraction_rate", rate, self.params)
         tgt = self._targeted(target_height, target_speed)
         H = _finite("target_height", target_height) if tgt[0] else math.nan
         V = _finite("target_speed", target_speed) if tgt[1] else math.nan

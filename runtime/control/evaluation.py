@@ -30,7 +30,8 @@ Parts (all on the human runner, :data:`~slipmaps.HUMAN_RUNNER`; SI units):
   angle held); the time-based policy (:mod:`.swing`) of the angle alone (its one target the apex
   height) and of the angle and k_d; the two-stage form. Per variant and d: the share of runs that
   do not fall, the largest d without a fall, the next apex's errors against the target on the steps
-  the policy reaches (plan status REACHED), the controller's time per step; at d = :data:`BLIND_D`
+  the policy reaches (plan status REACHED; BLIND, reached on the flat ground assumed, for the
+  apex-set policies), the controller's time per step; at d = :data:`BLIND_D`
   the same with apex-measurement noise (:data:`BLIND_NOISE`) and with the plant's mass off by
   :data:`BLIND_MASS`; the time of one policy of :data:`~.swing.DEFAULT_KNOTS` grounds
   (``slipmaps.swing_policy``, ``geyer`` and ``iterative``).
@@ -53,7 +54,7 @@ from ..analysis.gait import fixed_points
 from ..api.index import get, maps
 from ..api.params import HUMAN_RUNNER
 from ..api.progress import Bar
-from .runs import NOT_RUN, PLAN_NAMES, run_batch, scenario_of
+from .runs import BLIND, NOT_RUN, PLAN_NAMES, run_batch, scenario_of
 
 __all__ = [
     "DS",
@@ -444,7 +445,9 @@ def _blind_stats(batch) -> dict:
     dh, dv = batch.errors()
     aim = batch.scenario.aim
     rel = np.abs(dv) / np.maximum(np.abs(batch["target_speed"]), SPEED_FLOOR)
-    reached = (batch["plan_status"] == 0) & np.isfinite(dh)
+    # the policy reached the target on its model: on the true ground, or (BLIND) on the flat one
+    # the apex-set policies assume
+    reached = np.isin(batch["plan_status"], (0, BLIND)) & np.isfinite(dh)
     ran = np.isfinite(dh)
     solve = batch["solve_us"][batch["plan_status"] != NOT_RUN]
     # where the runs fell: the ground's rise above the start at the failed step, and the statuses

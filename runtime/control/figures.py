@@ -192,7 +192,7 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5, progress=None):
     import matplotlib.pyplot as plt
     from PIL import Image
 
-    from ..api.paths import writing
+    from ..api.paths import plain_ticks, writing
     from ..api.progress import Bar
 
     path = run.path(samples=30)
@@ -242,6 +242,7 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5, progress=None):
     canvas = fig.canvas
     moving = [*ax.lines, label]
     frame(0)
+    plain_ticks(fig)
     canvas.draw()  # the constrained layout once, then frozen
     fig.set_layout_engine("none")
     for artist in moving:

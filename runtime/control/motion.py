@@ -21,6 +21,7 @@ import numpy as np
 
 from ..api.index import get
 from ..api.maps import trajectory
+from .plant import ROBOT
 
 __all__ = ["Path", "path"]
 
@@ -89,7 +90,7 @@ def path(run, samples: int = 40) -> Path:
     g = sc.params.g_f
     plant_params = sc.params.with_(m=sc.params.m * (1.0 + sc.mismatch_mass))
     stiff = 1.0 + sc.mismatch_stiffness
-    sampled = get(sc.plant).has_trajectory
+    sampled = sc.plant != ROBOT and get(sc.plant).has_trajectory  # the robot: its event states
     n_steps = len(run)
     ok = b.codes["plant_status"][i] == 0
     T, X, Y, ST, LEG = [], [], [], [], []

@@ -21,12 +21,26 @@ chose there) and the ascent; it needs a plant map with half maps (``exact``, ``i
 
 A constant-stiffness plant (``geyer``, the gravity corrections) takes k = k_c and refuses a row
 whose k_d differs (INVALID_INPUT).
+
+The plant interface (what :func:`~slipmaps.runtime.control.runs.run_batch` calls; :class:`Plant`
+implements it for every map, :class:`~.robot_plant.RobotPlant` for the MuJoCo robot):
+``start(scenario, grounds, seeds)`` once before a batch's first step (a map plant has nothing to set
+up; a robot places one robot per run on its terrain), ``step``, ``compress`` and ``decompress``
+with the rows' run indices ``rows`` (a map plant is stateless and ignores them; a robot steps those
+runs' robots, which keep their own state between steps), ``has_halves`` (two-stage steps),
+``columns`` (the names of the plant's own per-step records in :attr:`PlantSteps.extras`: none for a
+map). The swing leg is commanded either as an angle at the apex held (or retracting at
+``retraction_rate``) or, with ``swing=``, as a time-based policy's tables
+(:class:`~.swing.PolicyTables`: the angle and the stiffness as functions of the time since the
+apex); a map plant reads the tables where the leg meets the ground (the touchdown is exact), a
+robot's hip servo follows them. :attr:`PlantSteps.ground` is the ground the foot met, relative to
+the ground under the apex: the commanded one for a map, the terrain's under the foot for a robot.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from slipmaps.generated.status import Status
@@ -37,7 +51,10 @@ from ..api.index import halves
 from ..api.names import Renamed
 from ..api.params import SlipParams
 
-__all__ = ["Plant", "PlantSteps", "ascent"]
+__all__ = ["Compressed", "Plant", "PlantSteps", "ROBOT", "ascent", "make_plant"]
+
+#: The plant that is not a map: the MuJoCo monoped (``slipmaps.runtime.robot``; the extra ``robot``).
+ROBOT = "mujoco"
 
 _POLAR = ("q_r", "q_rd", "q_th", "q_thd")
 
@@ -60,7 +77,9 @@ class PlantSteps:
     ``touchdown``, ``bottom``, ``liftoff`` (n, 4) polar states, times ``t_descent``, ``t_bottom``,
     ``t_stance``, ``t_ascent`` [s], ``foot_x`` (the foot at touchdown relative to the apex),
     ``step_length`` (apex to apex), the next apex ``next_apex_height`` (above the touchdown ground),
-    ``next_apex_speed``, and the stiffness the plant ran with, ``k_c`` and ``k_d``."""
+    ``next_apex_speed``, the stiffness the plant ran with, ``k_c`` and ``k_d``, the ``ground`` the
+    foot met (relative to the ground under the apex) and ``extras``, the plant's own records by
+    name (:attr:`Plant.columns`; empty for a map)."""
 
     status: np.ndarray
     touchdown: np.ndarray
@@ -76,6 +95,8 @@ class PlantSteps:
     step_length: np.ndarray
     k_c: np.ndarray
     k_d: np.ndarray
+    ground: np.ndarray
+    extras: dict = field(default_factory=dict)
 
     apex_height = Renamed("next_apex_height", "a plant step")
     apex_speed = Renamed("next_apex_speed", "a plant step")
@@ -104,9 +125,15 @@ class Plant:
         self._bo = [spec.outputs.index(f"bottom_{q}") for q in _POLAR]
         self._halves = {h.start: h.name for h in halves() if h.whole == self.name}
 
+    #: The plant's own per-step records (:attr:`PlantSteps.extras`): none for a map.
+    columns: tuple[str, ...] = ()
+
     @property
     def has_halves(self) -> bool:
         return {"touchdown", "bottom"} <= set(self._halves)
+
+    def start(self, scenario, grounds, seeds) -> None:
+        """Before a batch's first step (module docstring): a map plant is stateless, nothing to do."""
 
     # ------------------------------------------------------------------------------------------
     def _descent(self, h, v, th, ground, rate):
@@ -137,17 +164,45 @@ class Plant:
         status[fresh] = code[fresh]
         return out["apex_b_y"], out["apex_b_xd"], out["t_flight"], foot_x + out["apex_b_x"]
 
+    @staticmethod
+    def _rows(*columns):
+        return tuple(
+            np.ascontiguousarray(np.atleast_1d(np.asarray(x, dtype=float)))
+            for x in np.broadcast_arrays(*columns)
+        )
+
+    @staticmethod
+    def _swing(swing, scale, h, ground, th, kc, kd):
+        """The controls where a time-based policy's leg meets ``ground`` from apex ``h`` (its
+        stiffness times ``scale``), the given ``th``, ``kc``, ``kd`` where its tables have none."""
+        if swing is None:
+            return th, kc, kd
+        td = swing.touchdown(h, ground)
+        pick = lambda x, given: np.where(np.isfinite(x), x, given)  # noqa: E731
+        return pick(td["touchdown_angle"], th), pick(td["k_c"] * scale, kc), pick(td["k_d"] * scale, kd)
+
     def step(
-        self, apex_height, apex_speed, touchdown_angle, ground, k_c, k_d, retraction_rate=0.0
+        self,
+        apex_height,
+        apex_speed,
+        touchdown_angle,
+        ground,
+        k_c,
+        k_d,
+        retraction_rate=0.0,
+        *,
+        swing=None,
+        scale=1.0,
+        rows=None,
     ) -> PlantSteps:
         """One step of every row (module docstring); the swing leg at ``touchdown_angle`` at the apex,
-        retracting at ``retraction_rate`` [rad/s] until it meets the ground."""
-        h, v, th, gr, kc, kd, rate = (
-            np.ascontiguousarray(np.atleast_1d(np.asarray(x, dtype=float)))
-            for x in np.broadcast_arrays(
-                apex_height, apex_speed, touchdown_angle, ground, k_c, k_d, retraction_rate
-            )
+        retracting at ``retraction_rate`` [rad/s] until it meets the ground, or following the
+        time-based tables ``swing`` (their stiffness times ``scale``; ``touchdown_angle``, ``k_c``,
+        ``k_d`` where they have no value). ``rows``: the runs' indices (a map plant ignores them)."""
+        h, v, th, gr, kc, kd, rate = self._rows(
+            apex_height, apex_speed, touchdown_angle, ground, k_c, k_d, retraction_rate
         )
+        th, kc, kd = self._swing(swing, scale, h, gr, th, kc, kd)
         n = h.shape[0]
         status, td, t_descent, foot_x = self._descent(h, v, th, gr, rate)
         values = {a: td[:, j] for j, a in enumerate(self._stance.x)}
@@ -160,26 +215,29 @@ class Plant:
         lo[status != 0] = math.nan
         t_bottom = S[:, self._stance.outputs.index("t_bottom")]
         t_stance = S[:, self._stance.outputs.index("t_stance")]
-        return self._finish(status, td, t_descent, foot_x, t_bottom, bottom, t_stance, lo, kc, kd)
+        first = Compressed(status, td, t_descent, foot_x, t_bottom, bottom, gr, kc)
+        return self._finish(first, t_stance, lo, kd)
 
-    def _finish(self, status, td, t_descent, foot_x, t_bottom, bottom, t_stance, lo, kc, kd) -> PlantSteps:
+    def _finish(self, first: Compressed, t_stance, lo, kd) -> PlantSteps:
         """The ascent from liftoff ``lo`` and the steps' record (NaN in the rows that failed)."""
-        apex_h, apex_v, t_ascent, step_length = self._ascent(lo, status, foot_x)
+        status = first.status
+        apex_h, apex_v, t_ascent, step_length = self._ascent(lo, status, first.foot_x)
         out = PlantSteps(
             status=status,
-            touchdown=td,
-            t_descent=t_descent,
-            foot_x=foot_x,
-            t_bottom=t_bottom,
-            bottom=bottom,
+            touchdown=first.touchdown,
+            t_descent=first.t_descent,
+            foot_x=first.foot_x,
+            t_bottom=first.t_bottom,
+            bottom=first.bottom,
             t_stance=t_stance,
             liftoff=lo,
             t_ascent=t_ascent,
             next_apex_height=apex_h,
             next_apex_speed=apex_v,
             step_length=step_length,
-            k_c=kc,
+            k_c=first.k_c,
             k_d=kd,
+            ground=first.ground,
         )
         return _blank(out)
 
@@ -200,19 +258,28 @@ class Plant:
         names = {o.name for o in info.options}
         return {k: v for k, v in self.options.items() if k in names}
 
-    def compress(self, apex_height, apex_speed, touchdown_angle, ground, k_c, retraction_rate=0.0):
-        """The first stage of a two-stage step: the descent (the leg retracting at ``retraction_rate``)
-        and the compression half (k_c): ``(status, touchdown, t_descent, foot_x, t_bottom, bottom)``
-        per row."""
-        h, v, th, gr, kc, rate = (
-            np.ascontiguousarray(np.atleast_1d(np.asarray(x, dtype=float)))
-            for x in np.broadcast_arrays(
-                apex_height, apex_speed, touchdown_angle, ground, k_c, retraction_rate
-            )
+    def compress(
+        self,
+        apex_height,
+        apex_speed,
+        touchdown_angle,
+        ground,
+        k_c,
+        retraction_rate=0.0,
+        *,
+        swing=None,
+        scale=1.0,
+        rows=None,
+    ) -> Compressed:
+        """The first stage of a two-stage step: the descent (the leg retracting at ``retraction_rate``,
+        or following ``swing`` as in :meth:`step`) and the compression half (k_c) of every row."""
+        h, v, th, gr, kc, rate = self._rows(
+            apex_height, apex_speed, touchdown_angle, ground, k_c, retraction_rate
         )
+        th, kc, _ = self._swing(swing, scale, h, gr, th, kc, kc)
         status, td, t_descent, foot_x = self._descent(h, v, th, gr, rate)
         bottom, t_half = self._run_half("touchdown", td, "k_c", kc, status)
-        return status, td, t_descent, foot_x, t_half, bottom
+        return Compressed(status, td, t_descent, foot_x, t_half, bottom, gr, kc)
 
     def _run_half(self, start: str, rows: np.ndarray, key: str, stiffness: np.ndarray, status: np.ndarray):
         """The half map from ``start`` on the polar ``rows`` with its stiffness ``key``: its end
@@ -227,16 +294,57 @@ class Plant:
         end[status != 0] = math.nan
         return end, D[:, spec.outputs.index("t_half")]
 
-    def decompress(self, first, k_c, k_d) -> PlantSteps:
+    def decompress(self, first: Compressed, k_d, *, rows=None) -> PlantSteps:
         """The second stage: from :meth:`compress`'s result ``first`` the decompression half with
         k_d, then the ascent."""
-        status, td, t_descent, foot_x, t_bottom, bottom = (np.array(x, copy=True) for x in first)
-        kc = np.broadcast_to(np.asarray(k_c, dtype=float), status.shape).copy()
-        kd = np.broadcast_to(np.asarray(k_d, dtype=float), status.shape).copy()
-        rows = np.where(np.isfinite(bottom), bottom, 0.0)
-        rows[:, 0] = np.where(status == 0, rows[:, 0], self.params.l0 * 0.9)
-        lo, t_half = self._run_half("bottom", rows, "k_d", kd, status)
-        return self._finish(status, td, t_descent, foot_x, t_bottom, bottom, t_bottom + t_half, lo, kc, kd)
+        first = first.copy()
+        kd = np.broadcast_to(np.asarray(k_d, dtype=float), first.status.shape).copy()
+        bottom = first.bottom
+        start = np.where(np.isfinite(bottom), bottom, 0.0)
+        start[:, 0] = np.where(first.status == 0, start[:, 0], self.params.l0 * 0.9)
+        lo, t_half = self._run_half("bottom", start, "k_d", kd, first.status)
+        return self._finish(first, first.t_bottom + t_half, lo, kd)
+
+
+@dataclass
+class Compressed:
+    """The first stage of a two-stage step of many rows (:meth:`Plant.compress`): ``status``, the
+    ``touchdown`` and ``bottom`` polar states (n, 4), ``t_descent``, ``foot_x``, ``t_bottom`` (the
+    compression's duration), the ``ground`` the foot met (relative to the apex's) and the ``k_c`` it
+    compressed with; a robot plant adds its own records in ``extras``."""
+
+    status: np.ndarray
+    touchdown: np.ndarray
+    t_descent: np.ndarray
+    foot_x: np.ndarray
+    t_bottom: np.ndarray
+    bottom: np.ndarray
+    ground: np.ndarray
+    k_c: np.ndarray
+    extras: dict = field(default_factory=dict)
+
+    @property
+    def ok(self) -> np.ndarray:
+        return self.status == int(Status.OK)
+
+    def copy(self) -> Compressed:
+        return Compressed(
+            *(np.array(getattr(self, f), copy=True) for f in _COMPRESSED), extras=dict(self.extras)
+        )
+
+
+_COMPRESSED = ("status", "touchdown", "t_descent", "foot_x", "t_bottom", "bottom", "ground", "k_c")
+
+
+def make_plant(scenario):
+    """The plant of a scenario (:class:`~.scenarios.Scenario`): its map, with the model mismatch
+    (the mass (1 + ``mismatch_mass``) times the controller's), or the MuJoCo robot (:data:`ROBOT`)."""
+    if scenario.plant == ROBOT:
+        from .robot_plant import RobotPlant
+
+        return RobotPlant(scenario)
+    p = scenario.params
+    return Plant(scenario.plant, p.with_(m=p.m * (1.0 + scenario.mismatch_mass)), **scenario.plant_options)
 
 
 def _blank(out: PlantSteps) -> PlantSteps:

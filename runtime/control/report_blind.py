@@ -114,7 +114,8 @@ def blind_section(rec: dict) -> list[str]:
         "as functions of the time since the apex) of the angle alone, whose one target is the apex height, "
         "and of the angle and k_d; the two-stage form (k_d chosen again at the measured bottom). A step "
         "the policy reaches: its plan status is REACHED (for the time-based policies: both knots around the "
-        "touchdown reached the target on the model; for the apex deadbeat: on the flat ground it assumed).",
+        "touchdown reached the target on the model) or, for the apex deadbeat, BLIND (the target reached on "
+        "the model on the flat ground it assumed).",
         "",
         "| target | met | measured |",
         "| --- | --- | --- |",

@@ -29,8 +29,15 @@ Records (:class:`RunBatch`, arrays runs x steps; :class:`Run` one run with its s
 the apex (true and measured), the ground, the nominal and the planned target, the controls (the
 leg's angle at the apex ``swing_angle`` and at the touchdown ``touchdown_angle``; ``swing``: the
 leg's angle at :data:`SWING_SAMPLES` evenly spaced times of each descent), the plan status
-(``REACHED``, ``UNREACHABLE``, ``MAP_FAILED``; ``OUT_OF_RANGE`` for a time-based step whose ground
-lies outside its policy's; ``FIXED`` for a fixed-angle run, the self-stable baseline), the plant
+(:data:`PLAN_MEANINGS`: what the controller's solve promises on its model. ``REACHED``, the model's
+next apex on the target from the measured apex on the true ground; ``BLIND``, the same on the flat
+ground the controller assumed where the ground is unknown (``known = 0``) and differs: the plant
+meets the true ground at another time and angle, so its apex misses by the ground's effect (up to
+166 mm on ``examples/blind_running.toml`` with ``policy = "retraction"``, ``retraction_rate =
+-1.0``; a time-based step reads its status where the leg met the true ground, so it is never
+BLIND); ``UNREACHABLE``, ``MAP_FAILED``; ``OUT_OF_RANGE`` for a time-based step whose ground lies
+outside its policy's; ``FIXED`` for a fixed-angle run, the self-stable baseline; ``FEEDBACK`` for
+Raibert's controller, which plans nothing), the plant
 status, the next apex (``next_apex_height``, ``next_apex_speed``: the names of every result,
 ``slipmaps.runtime.api.names``; the former ``next_height``, ``next_speed`` still read, with a
 DeprecationWarning) and its error against the planned target, the step length, the controller's
@@ -45,10 +52,11 @@ machine's memory is refused with the estimate (ValueError). Ctrl-C during a run 
 
 from __future__ import annotations
 
+import difflib
 import math
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from pathlib import Path
 
 import numpy as np
@@ -57,13 +65,15 @@ from slipmaps.generated.status import Status
 from ..api.frames import flat_columns, status_columns, to_pandas
 from ..api.index import get
 from ..api.names import RUN_RENAMED, RenamedKeys, warn_renamed
+from ..api.numeric import num
 from ..api.progress import Bar
-from ..api.validate import POLAR_NAMES
+from ..api.validate import POLAR_NAMES, real_array
 from . import compiled
 from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
 from .planner import plan_targets
-from .plant import Plant
+from .plant import ROBOT, Plant, make_plant
+from .raibert import raibert_controls
 from .scenarios import Scenario, from_dict, load, resized
 from .swing import policy_tables
 
@@ -77,6 +87,7 @@ __all__ = [
     "memory_estimate",
     "run",
     "run_batch",
+    "PLAN_MEANINGS",
     "PLAN_NAMES",
     "scenario_of",
 ]
@@ -84,15 +95,29 @@ __all__ = [
 #: Below this measured apex speed [m/s] a step that reverses the direction is planned from a hop in
 #: place; above it the target becomes a hop in place first.
 V_REVERSE = 0.05
-#: Plan status codes in the records: the solver's, and the two a record adds.
-FIXED, NOT_RUN = -1, -2
+#: Plan status codes in the records: the solver's, the swing policy's OUT_OF_RANGE, and those a
+#: record adds: BLIND (a solve, so >= 0 as the solver's), FIXED, NOT_RUN and FEEDBACK (no solve).
+BLIND, FIXED, NOT_RUN, FEEDBACK = 4, -1, -2, -3
 PLAN_NAMES = {
     0: "REACHED",
     1: "UNREACHABLE",
     2: "MAP_FAILED",
     3: "OUT_OF_RANGE",
+    BLIND: "BLIND",
     FIXED: "FIXED",
     NOT_RUN: "-",
+    FEEDBACK: "FEEDBACK",
+}
+#: What each plan status promises (the table's legend): the controller's, on its model.
+PLAN_MEANINGS = {
+    "REACHED": "the model's next apex on the target, from the measured apex on the true ground",
+    "BLIND": "the model's next apex on the target on the flat ground the controller assumed (the "
+    "ground unknown, known = 0); the plant met the true ground, so its apex misses by that ground's effect",
+    "UNREACHABLE": "the model's closest apex to the target within the bounds",
+    "MAP_FAILED": "the model failed at every control tried (the previous angle, the nominal stiffness)",
+    "OUT_OF_RANGE": "the ground outside the time-based policy's grounds (its end controls held)",
+    "FIXED": "no controller: the fixed angle and the nominal stiffness",
+    "FEEDBACK": "Raibert's feedback controller: no model, nothing planned",
 }
 #: What a former name's warning says it was read on.
 _WHERE = "a run"
@@ -135,7 +160,15 @@ _CODES = ("plan_status", "bottom_status", "plant_status")
 
 
 def scenario_of(scenario, overrides: dict) -> Scenario:
-    """A :class:`Scenario` from a Scenario, a TOML path or a dict, with fields overridden."""
+    """A :class:`Scenario` from a Scenario, a TOML path or a dict, with fields overridden: every
+    override checked before any work (TypeError for a name that is no field, naming the fields;
+    :class:`~.scenarios.ScenarioError`, a ValueError, for a value out of its field's domain)."""
+    names = [f.name for f in fields(Scenario)]
+    for key in overrides:
+        if key not in names:
+            close = difflib.get_close_matches(key, names, n=1)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            raise TypeError(f"unknown scenario field {key!r}{hint}; the fields: {', '.join(names)}")
     if scenario is None:
         sc = Scenario()
     elif isinstance(scenario, Scenario):
@@ -205,7 +238,8 @@ class RunBatch:
     """Many runs of one scenario (arrays runs x steps, NaN where a step did not run; module
     docstring). ``fell`` (runs,): a plant step failed; ``completed``: steps run; ``grounds``: the
     terrain of each run; ``swing`` (runs x steps x ``SWING_SAMPLES``): the leg's angle over each
-    descent."""
+    descent; ``plant``: the plant the runs ran on (the robot plant keeps its robots and their
+    logged trajectories)."""
 
     scenario: Scenario
     grounds: np.ndarray
@@ -213,6 +247,7 @@ class RunBatch:
     states: dict[str, np.ndarray]
     codes: dict[str, np.ndarray]
     swing: np.ndarray | None = None
+    plant: object = None
 
     @property
     def runs(self) -> int:
@@ -319,7 +354,8 @@ class Run:
 
     def table(self) -> str:
         """The run as a table, a row per step: the next apex's errors against the target in mm and
-        mm/s (absolute, so a target speed of 0, a stop, has one too)."""
+        mm/s (absolute, so a target speed of 0, a stop, has one too); under it the run's status and
+        a legend line per plan status shown (``slipmaps.runtime.control.runs.PLAN_MEANINGS``)."""
         sc = self.scenario
         head = (
             f"{'step':>4} {'ground':>7} {'apex h':>8} {'apex v':>8} {'target h':>9} {'target v':>9} "
@@ -344,6 +380,8 @@ class Run:
             f"{sc.name}: model {sc.model}, plant {sc.plant}; {self.status}"
             + ("; * k_d chosen again at the bottom" if sc.two_stage else "")
         )
+        shown = {r["plan_status"] for r in self.steps}
+        lines += [f"plan {name}: {text}" for name, text in PLAN_MEANINGS.items() if name in shown]
         return "\n".join(lines)
 
     def as_dict(self) -> dict:
@@ -385,15 +423,16 @@ def _noise(sc: Scenario, runs: int, seeds) -> np.ndarray:
 
 class _Controller:
     """The scenario's controller: the apex stage on the model, the bottom stage (two-stage), the
-    planner's settings; the plant with the mismatch."""
+    planner's settings; the plant (a map with the mismatch, or the robot)."""
 
     def __init__(self, sc: Scenario):
         p = sc.params
         self.sc = sc
         self.params = p
         self.fixed = sc.fixed_angle is not None
+        self.raibert = sc.policy == "raibert"
         self.deadbeat = None
-        if not self.fixed:
+        if not (self.fixed or self.raibert):
             self.deadbeat = Deadbeat(
                 sc.model,
                 p,
@@ -410,8 +449,7 @@ class _Controller:
         self.bottom = (
             BottomDeadbeat(sc.decompression, p, bounds=self.k_d_bounds, aim=sc.aim) if sc.two_stage else None
         )
-        plant_params = p.with_(m=p.m * (1.0 + sc.mismatch_mass))
-        self.plant = Plant(sc.plant, plant_params, **sc.plant_options)
+        self.plant = make_plant(sc)
         self.stiff = 1.0 + sc.mismatch_stiffness
         if sc.two_stage and not self.plant.has_halves:
             self.plant._half("touchdown")  # the error naming the plants that have halves
@@ -443,7 +481,8 @@ def check(sc: Scenario) -> None:
     Call.of(
         sc.model, p.with_(k=p.k_c) if "constant_stiffness" in get(sc.model).requires else p, sc.model_options
     )
-    Call.of(sc.plant, p.with_(k=p.k_c), sc.plant_options)
+    if sc.plant != ROBOT:
+        Call.of(sc.plant, p.with_(k=p.k_c), sc.plant_options)
     if sc.two_stage:
         Call.of(sc.decompression, p, {}, half=True)
 
@@ -465,22 +504,32 @@ def run_batch(
     run (default 0, 1, ...). ``scalar`` (default: one run) plans with the scalar solve, timed per step.
     """
     sc = scenario_of(scenario, overrides)
-    G = np.atleast_2d(np.asarray(sc.ground if grounds is None else grounds, dtype=float))
-    if G.shape[1] != sc.steps:
+    G = np.atleast_2d(real_array("grounds", sc.ground if grounds is None else grounds))
+    if G.ndim != 2 or G.shape[1] != sc.steps:
         raise ValueError(f"grounds must have {sc.steps} columns (one per step), got shape {G.shape}")
+    if not np.isfinite(G).all():
+        raise ValueError(f"grounds must be finite, got {num(G[~np.isfinite(G)][0])}")
     R, S = G.shape
     check_memory(R, S)
-    seeds = np.arange(R) if seeds is None else np.asarray(seeds)
+    seeds = np.arange(R) if seeds is None else np.atleast_1d(real_array("seeds", seeds))
+    if seeds.shape != (R,) or not np.all((seeds >= 0) & (seeds == np.round(seeds))):
+        raise ValueError(f"seeds must be {R} whole numbers >= 0 (one per run), got {seeds.tolist()!r}")
+    for name, flag in (("scalar", scalar), ("progress", progress)):
+        if flag is not None and not isinstance(flag, bool):
+            raise TypeError(f"{name} must be True, False or None, got {flag!r}")
     scalar = (R == 1) if scalar is None else scalar
     ctl = _Controller(sc)
     _warm(ctl, scalar)
+    ctl.plant.start(sc, G, seeds)
+    extras = tuple(ctl.plant.columns)
     batch = RunBatch(
         sc,
         G,
-        values=RenamedKeys({k: np.full((R, S), math.nan) for k in _FIELDS}, RUN_RENAMED, _WHERE),
+        values=RenamedKeys({k: np.full((R, S), math.nan) for k in (*_FIELDS, *extras)}, RUN_RENAMED, _WHERE),
         states={k: np.full((R, S, 4), math.nan) for k in _STATES},
         codes={k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES},
         swing=np.full((R, S, SWING_SAMPLES), math.nan),
+        plant=ctl.plant,
     )
     live = _Live(
         h=np.full(R, sc.start_height),
@@ -489,6 +538,7 @@ def run_batch(
         angle_prev=np.full(R, math.nan),
         authority=np.full(R, math.nan),
         noise=_noise(sc, R, seeds),
+        integral=np.zeros(R),
     )
     alive = np.ones(R, dtype=bool)
     values, codes = batch.values, batch.codes
@@ -503,7 +553,7 @@ def run_batch(
                 alive[idx[~ok]] = False
                 live.h[idx] = values["next_apex_height"][idx, n]
                 live.v[idx] = values["next_apex_speed"][idx, n]
-                live.ground_prev[idx] = G[idx, n]
+                live.ground_prev[idx] = values["ground"][idx, n]
                 bar.update(1)
     except KeyboardInterrupt:
         raise RunInterrupted(batch) from None
@@ -514,7 +564,7 @@ def run_batch(
 class _Live:
     """The runs between steps (arrays of runs): the true apex, the ground under it, the previous
     step's angle and the energy authority (the solve's warm start), the measurement noise (runs x
-    steps x 2)."""
+    steps x 2), Raibert's height integral."""
 
     h: np.ndarray
     v: np.ndarray
@@ -522,6 +572,30 @@ class _Live:
     angle_prev: np.ndarray
     authority: np.ndarray
     noise: np.ndarray
+    integral: np.ndarray
+
+
+def _correction(sc: Scenario, n: int, idx: np.ndarray, values: dict) -> tuple[np.ndarray, np.ndarray]:
+    """The step-to-step correction of the rows ``idx`` at step ``n`` (``sc.correction`` > 0): the
+    mean prediction residual (next apex minus the model's prediction, height and speed) of the last
+    ``sc.correction`` steps whose touchdown ground differed from the ground under their apex by at
+    most ``sc.correction_gate`` (a terrain change is not a model error); zero without such steps."""
+    m = idx.size
+    if sc.correction == 0 or n == 0:
+        return np.zeros(m), np.zeros(m)
+    lo = max(0, n - sc.correction)
+    past = slice(lo, n)
+    ground = values["ground"][idx, :n]
+    before = np.concatenate([np.zeros((m, 1)), ground[:, :-1]], axis=1)
+    level = np.abs(ground - before)[:, past] <= sc.correction_gate
+    out = []
+    for key in ("height", "speed"):
+        r = values[f"next_{key}"][idx, past] - values[f"predicted_{key}"][idx, past]
+        use = level & np.isfinite(r)
+        count = use.sum(axis=1)
+        total = np.where(use, r, 0.0).sum(axis=1)
+        out.append(np.where(count > 0, total / np.maximum(count, 1), 0.0))
+    return out[0], out[1]
 
 
 def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatch, scalar: bool) -> None:
@@ -545,27 +619,36 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
     near = np.abs(vm) <= V_REVERSE
     V_step = np.where(opposite & ~near, 0.0, Vn)
     v_plan = np.where(opposite & near, 0.0, vm)
+    # the model's loss: the apex speed it plans from is what is left after the step's loss
+    v_model = v_plan * (1.0 - sc.model_loss) if sc.model_loss else v_plan
     H_step = Hn.copy()
     values["apex_height"][idx, n] = h[idx]
     values["apex_speed"][idx, n] = v[idx]
     values["measured_height"][idx, n] = hm
     values["measured_speed"][idx, n] = vm
-    values["ground"][idx, n] = G[idx, n]
     values["nominal_height"][idx, n] = Hn
     values["nominal_speed"][idx, n] = Vn
     t0 = time.perf_counter()
-    if ctl.fixed:
-        th = np.full(m, sc.fixed_angle)
+    tables = None
+    nan = np.full(m, math.nan)
+    if ctl.fixed or ctl.raibert:
         kc = np.full(m, p.k_c)
-        kd = np.full(m, p.k_d)
-        plan = np.full(m, FIXED)
-        pred_h = pred_v = resid = elo = ehi = np.full(m, math.nan)
-        solve = np.zeros(m)
+        if ctl.fixed:
+            th, kd, plan = np.full(m, sc.fixed_angle), np.full(m, p.k_d), np.full(m, FIXED)
+        else:
+            t_last = values["t_stance"][idx, n - 1] if n else nan
+            th, kd = raibert_controls(
+                sc.raibert, p, hm, vm, H_step, V_step, t_last, live.integral[idx], ctl.k_d_bounds
+            )
+            live.integral[idx] += (H_step - hm) / p.l0
+            plan = np.full(m, FEEDBACK)
+        pred_h = pred_v = resid = elo = ehi = nan
+        solve = np.zeros(m) if ctl.fixed else np.full(m, (time.perf_counter() - t0) * 1e6 / m)
     else:
-        start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], default_angle(p, v_plan))
+        start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], default_angle(p, v_model))
         if sc.known >= 1:
             if ctl.energy and not np.isfinite(authority[idx]).all():
-                pre = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar)
+                pre = _plan(ctl.deadbeat, hm, v_model, H_step, V_step, gr_model, start, scalar)
                 authority[idx] = np.where(np.isfinite(authority[idx]), authority[idx], pre["authority"])
             cols = [min(n + k, S - 1) for k in range(sc.known)]
             future = G[idx][:, cols] - ground_prev[idx][:, None]
@@ -575,58 +658,63 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
 
             def planned(rows, auth):
                 kw = {"mass": p.m, "g": p.g_f, "l0": p.l0, "min_height": sc.floor}
-                args = (hm[rows], v_plan[rows], future[rows], Hf[rows], Vf[rows], auth, p.k_c, ctl.k_d_bounds)
+                args = (
+                    hm[rows],
+                    v_model[rows],
+                    future[rows],
+                    Hf[rows],
+                    Vf[rows],
+                    auth,
+                    p.k_c,
+                    ctl.k_d_bounds,
+                )
                 return plan_targets(*args, **kw)
 
             every = np.arange(m)
             H_step, V_step = planned(every, authority[idx] if ctl.energy else np.full(m, math.nan))
+        dh, dv = _correction(sc, n, idx, values)
+        H_aim, V_aim = H_step - dh, V_step - dv
         if ctl.policy is not None:
-            th, kc, kd, plan, pred_h, pred_v, solve, tables = _time_based(
-                ctl, hm, v_plan, H_step, V_step, gr_model, h[idx], gr_true
-            )
-            resid = elo = ehi = np.full(m, math.nan)
+            tables, solve = _time_based_tables(ctl, hm, v_model, H_aim, V_aim, gr_model)
+            th, kc, kd = default_angle(p, v_model), np.full(m, p.k_c), np.full(m, p.k_d)  # no table value
+            resid = elo = ehi = nan
         else:
-            res = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar, ctl.rate)
-    if not ctl.fixed and ctl.policy is None:
+            res = _plan(ctl.deadbeat, hm, v_model, H_aim, V_aim, gr_model, start, scalar, ctl.rate)
+    if ctl.deadbeat is not None and ctl.policy is None:
         if sc.known >= 1 and ctl.energy:
             # the authority changes with the angle: where the plan fell short, plan once more with
             # the authority of this solve
             again = np.flatnonzero((res["status"] == compiled.UNREACHABLE) & np.isfinite(res["authority"]))
             if again.size:
                 H2, V2 = planned(again, res["authority"][again])
-                args = (hm[again], v_plan[again], H2, V2, gr_model[again], res["touchdown_angle"][again])
-                res2 = _plan(ctl.deadbeat, *args, scalar, ctl.rate)
+                args = (hm[again], v_model[again], H2 - dh[again], V2 - dv[again], gr_model[again])
+                res2 = _plan(ctl.deadbeat, *args, res["touchdown_angle"][again], scalar, ctl.rate)
                 H_step[again], V_step[again] = H2, V2
                 for k in res:
                     res[k][again] = res[k][again] + res2[k] if k == "solve_us" else res2[k]
-        plan = res["status"]
+        # what the solve promises: REACHED on the ground it planned on; BLIND where that was the flat
+        # ground assumed (the ground unknown) and the true one differs
+        plan = np.where((res["status"] == compiled.REACHED) & (gr_model != gr_true), BLIND, res["status"])
         failed = plan == compiled.MAP_FAILED
         th = np.where(failed, start, res["touchdown_angle"])
         kc = np.where(failed, p.k_c, res["k_c"])
         kd = np.where(failed, p.k_d, res["k_d"])
-        pred_h, pred_v, resid = res["next_apex_height"], res["next_apex_speed"], res["residual"]
+        pred_h, pred_v, resid = res["next_apex_height"] + dh, res["next_apex_speed"] + dv, res["residual"]
         elo, ehi = res["energy_low"], res["energy_high"]
         authority[idx] = np.where(np.isfinite(res["authority"]), res["authority"], authority[idx])
         solve = res["solve_us"]
-    if not scalar and not ctl.fixed and ctl.policy is None:
-        solve = np.full(m, (time.perf_counter() - t0) * 1e6 / m)
+        if not scalar:
+            solve = np.full(m, (time.perf_counter() - t0) * 1e6 / m)
     values["target_height"][idx, n] = H_step
     values["target_speed"][idx, n] = V_step
-    values["swing_angle"][idx, n] = th if ctl.policy is None else _swing_at(tables, np.zeros(m))
-    values["k_c"][idx, n] = kc
-    values["k_d_planned"][idx, n] = kd
-    values["predicted_height"][idx, n] = pred_h
-    values["predicted_speed"][idx, n] = pred_v
-    values["residual"][idx, n] = resid
-    values["energy_low"][idx, n] = elo
-    values["energy_high"][idx, n] = ehi
     values["solve_us"][idx, n] = solve
-    codes["plan_status"][idx, n] = plan
     f = ctl.stiff
+    leg = {"swing": tables, "scale": f, "rows": idx}
     if ctl.bottom is not None:
-        first = ctl.plant.compress(h[idx], v[idx], th, gr_true, kc * f, ctl.rate)
-        bottoms = first[5]
-        ok = first[0] == 0
+        first = ctl.plant.compress(h[idx], v[idx], th, gr_true, kc * f, ctl.rate, **leg)
+        if tables is not None:
+            kd = _read_tables(tables, h[idx], first.ground, p)["k_d"]
+        ok = first.ok
         t1 = time.perf_counter()
         kd_b = kd.copy()
         bstat = np.full(m, NOT_RUN)
@@ -634,7 +722,7 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
             rows = np.flatnonzero(ok)
             if scalar:
                 for i in rows:
-                    b = ctl.bottom.plan(bottoms[i], H_step[i], V_step[i], k_d=kd[i])
+                    b = ctl.bottom.plan(first.bottom[i], H_step[i], V_step[i], k_d=kd[i])
                     bstat[i] = (
                         compiled.MAP_FAILED
                         if b.status == PlanStatus.MAP_FAILED
@@ -643,18 +731,37 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
                     if b.status != PlanStatus.MAP_FAILED:
                         kd_b[i] = b.k_d
             else:
-                out = ctl.bottom.plan_batch(bottoms[rows], H_step[rows], V_step[rows], k_d=kd[rows])
+                out = ctl.bottom.plan_batch(first.bottom[rows], H_step[rows], V_step[rows], k_d=kd[rows])
                 bstat[rows] = out["status"]
                 good = out["status"] != compiled.MAP_FAILED
                 kd_b[rows[good]] = out["k_d"][good]
         values["bottom_us"][idx, n] = (time.perf_counter() - t1) * 1e6 / max(int(ok.sum()), 1)
         codes["bottom_status"][idx, n] = bstat
-        steps = ctl.plant.decompress(first, kc * f, kd_b * f)
-        kd_applied = kd_b
+        steps = ctl.plant.decompress(first, kd_b * f, rows=idx)
     else:
-        steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f, ctl.rate)
-        kd_applied = kd
-    values["k_d"][idx, n] = kd_applied
+        steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f, ctl.rate, **leg)
+        kd_b = None
+    met = steps.ground
+    values["ground"][idx, n] = np.where(met == gr_true, G[idx, n], ground_prev[idx] + met)
+    if tables is not None:
+        # the time-based policy: the controls its tables gave where the leg met the ground, the
+        # plan's status there, and the model's prediction at those controls from the measured apex
+        td = _read_tables(tables, h[idx], met, p)
+        th = np.where(np.isfinite(td["touchdown_angle"]), td["touchdown_angle"], th)
+        kc, kd = td["k_c"], td["k_d"]
+        plan = np.where(tables.counts > 0, td["status"], compiled.MAP_FAILED)
+        model = ctl.model_plant.step(hm, v_model, th, np.where(np.isfinite(met), met, gr_true), kc, kd)
+        pred_h, pred_v = model.next_apex_height, model.next_apex_speed
+    values["swing_angle"][idx, n] = th if tables is None else _swing_at(tables, np.zeros(m))
+    values["k_c"][idx, n] = kc
+    values["k_d_planned"][idx, n] = kd
+    values["predicted_height"][idx, n] = pred_h
+    values["predicted_speed"][idx, n] = pred_v
+    values["residual"][idx, n] = resid
+    values["energy_low"][idx, n] = elo
+    values["energy_high"][idx, n] = ehi
+    codes["plan_status"][idx, n] = plan
+    values["k_d"][idx, n] = kd if kd_b is None else kd_b
     codes["plant_status"][idx, n] = steps.status
     for name, attr in (
         ("next_apex_height", "next_apex_height"),
@@ -667,6 +774,8 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
         ("foot_x", "foot_x"),
     ):
         values[name][idx, n] = getattr(steps, attr)
+    for name, column in steps.extras.items():
+        values[name][idx, n] = column
     for name in _STATES:
         states[name][idx, n] = getattr(steps, name)
     # the leg's angle: at the touchdown (the plant's), and over the descent
@@ -674,7 +783,7 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
     values["touchdown_angle"][idx, n] = np.where(np.isfinite(td_angle), td_angle, th)
     frac = np.linspace(0.0, 1.0, SWING_SAMPLES)
     times = steps.t_descent[:, None] * frac[None, :]
-    if ctl.policy is None:
+    if tables is None:
         swing[idx, n] = th[:, None] + ctl.rate * times
     else:
         for k in range(SWING_SAMPLES):
@@ -688,10 +797,18 @@ def _swing_at(tables, t) -> np.ndarray:
     return tables.controls_at(t)["touchdown_angle"]
 
 
-def _time_based(ctl: _Controller, hm, vm, H, V, gr_model, h_true, gr_true):
-    """A time-based step of every row: the policies at the measured apex over the grounds around
-    the expected one (:mod:`.swing`), read where the leg meets the true ground from the true apex;
-    the model's prediction at those controls and that ground from the measured apex."""
+def _read_tables(tables, h_true, ground, p) -> dict:
+    """The time-based policies' controls where the leg from the true apex meets ``ground`` (the
+    nominal stiffness where a table has none), and the plan status there."""
+    td = tables.touchdown(h_true, np.where(np.isfinite(ground), ground, 0.0))
+    td["k_c"] = np.where(np.isfinite(td["k_c"]), td["k_c"], p.k_c)
+    td["k_d"] = np.where(np.isfinite(td["k_d"]), td["k_d"], p.k_d)
+    return td
+
+
+def _time_based_tables(ctl: _Controller, hm, vm, H, V, gr_model):
+    """A time-based step's policies, one per row: at the measured apex over the grounds around the
+    expected one (:mod:`.swing`), and the time they took per row [us]."""
     sc = ctl.sc
     t0 = time.perf_counter()
     targeted = ctl.policy._targeted(None if sc.aim == "speed" else H, None if sc.aim == "height" else V)
@@ -703,14 +820,7 @@ def _time_based(ctl: _Controller, hm, vm, H, V, gr_model, h_true, gr_true):
         V if targeted[1] else None,
         gr_model[:, None] + ctl.grid[None, :],
     )
-    solve = np.full(hm.size, (time.perf_counter() - t0) * 1e6 / hm.size)
-    td = tables.touchdown(h_true, gr_true)
-    th = np.where(np.isfinite(td["touchdown_angle"]), td["touchdown_angle"], default_angle(sc.params, vm))
-    kc = np.where(np.isfinite(td["k_c"]), td["k_c"], sc.params.k_c)
-    kd = np.where(np.isfinite(td["k_d"]), td["k_d"], sc.params.k_d)
-    plan = np.where(tables.counts > 0, td["status"], compiled.MAP_FAILED)
-    model = ctl.model_plant.step(hm, vm, th, gr_true, kc, kd)
-    return th, kc, kd, plan, model.next_apex_height, model.next_apex_speed, solve, tables
+    return tables, np.full(hm.size, (time.perf_counter() - t0) * 1e6 / hm.size)
 
 
 def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar, rate=0.0) -> dict[str, np.ndarray]:
@@ -719,10 +829,10 @@ def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar, rate=0.0) -> dict[str,
     if not scalar:
         b = ctl.plan_batch(hm, vm, H, V, ground=gr, touchdown_angle=start, retraction_rate=rate)
         cols = {
-            k: np.asarray(b[k])
+            k: np.array(b[k])
             for k in ("status", "touchdown_angle", "k_c", "k_d", "next_apex_height", "next_apex_speed")
         }
-        cols |= {k: np.asarray(b[k]) for k in ("residual", "energy_low", "energy_high", "authority")}
+        cols |= {k: np.array(b[k]) for k in ("residual", "energy_low", "energy_high", "authority")}
         cols["solve_us"] = np.full(hm.size, math.nan)
         return cols
     keys = (

@@ -26,7 +26,14 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "the controller's model: any map of `slipmaps maps`",
         "model",
     ),
-    ("", "plant"): ("map name", '"exact"', "", "the plant the run happens on: any map", "plant"),
+    ("", "plant"): (
+        'map name, "mujoco" or table',
+        '"exact"',
+        "",
+        "the plant the run happens on: any map, or `mujoco` (the MuJoCo robot: docs/robot.md); as a "
+        "table `[plant]`, its `kind` (the name) and its options (instead of `[plant_options]`)",
+        "plant",
+    ),
     ("", "start"): ("table", "", "", "the first apex: `height`, `speed`", None),
     ("", "targets"): ("table", "", "", "the target of each step's next apex: `height`, `speed`", None),
     ("", "terrain"): ("table", "", "", "the ground of each touchdown: `kind` and its keys, `known`", None),
@@ -35,7 +42,8 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "table",
         "the human runner",
         "SI",
-        "the controller's SLIP parameters (SlipParams fields)",
+        "the controller's SLIP parameters (SlipParams fields; the human runner's where not given, the "
+        "leg lengths following l0)",
         None,
     ),
     ("", "mismatch"): ("table", "", "", "how the plant differs from the model: `mass`, `stiffness`", None),
@@ -47,7 +55,13 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "the model map's options (`slipmaps maps NAME`)",
         "model_options",
     ),
-    ("", "plant_options"): ("table", "{}", "", "the plant map's options", "plant_options"),
+    ("", "plant_options"): (
+        "table",
+        "{}",
+        "",
+        "the plant map's options, or the robot's parameters and terrain (docs/robot.md)",
+        "plant_options",
+    ),
     ("start", "height"): ("number >= 0", "1.0", "m", "apex height above the ground under it", "start_height"),
     ("start", "speed"): (
         "number",
@@ -146,16 +160,16 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
     ),
     ("control", "tol"): ("number > 0", "1e-9", "scaled", "the deadbeat solve's tolerance", "tol"),
     ("control", "policy"): (
-        "apex, retraction, time-based",
+        "apex, retraction, time-based, raibert",
         '"apex"',
         "",
         "the swing leg: the angle set at the apex and held; set at the apex and retracting at "
         "`retraction_rate`; or a time-based policy over `grounds` (the controls as functions of the "
-        "time since the apex)",
+        "time since the apex); or Raibert's controller (foot placement and thrust, no map)",
         "policy",
     ),
     ("control", "retraction_rate"): (
-        "number",
+        "number, abs <= sqrt(g_f/q_r_td)",
         "0.0",
         "rad/s",
         "policy retraction (or with fixed_angle): the leg angle after the apex is the angle set plus "
@@ -175,6 +189,35 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "",
         "policy time-based: the grounds of the policy's table",
         "knots",
+    ),
+    ("control", "raibert"): (
+        "table",
+        "the tuned gains",
+        "s, -, -",
+        "policy raibert: its gains `k_v` (foot placement per speed error), `k_h`, `k_i` (height loop)",
+        None,
+    ),
+    ("control", "correction"): (
+        "integer >= 0",
+        "0",
+        "steps",
+        "the last steps whose mean prediction residual (next apex minus the model's) shifts the "
+        "deadbeat target (0: none)",
+        "correction",
+    ),
+    ("control", "correction_gate"): (
+        "number > 0",
+        "0.01",
+        "m",
+        "a step whose ground changed by more than this is left out of the correction",
+        "correction_gate",
+    ),
+    ("control", "model_loss"): (
+        "number in [0, 1)",
+        "0.0",
+        "fraction",
+        "the model's loss: the fraction of the apex speed lost per step (`slipmaps.identify` fits it)",
+        "model_loss",
     ),
     ("mismatch", "mass"): (
         "number > -1",
@@ -218,20 +261,25 @@ def _params_rows() -> list[tuple[str, str, str, str, str]]:
     from ..api.params import FIELDS, HUMAN_RUNNER, PARAMETERS
 
     docs = {p["name"]: p for p in PARAMETERS}
-    rows = [
-        (f"`{f}`", "number > 0", repr(getattr(HUMAN_RUNNER, f)), docs[f]["unit"], docs[f]["doc"])
-        for f in FIELDS
-    ]
+    rows = []
+    for f in FIELDS:
+        rest = docs[f]["default"]  # "l0" for a leg length: it follows the rest length
+        kind = f"number in (0, {rest}]" if isinstance(rest, str) else "number > 0"
+        default = rest if isinstance(rest, str) else repr(getattr(HUMAN_RUNNER, f))
+        rows.append((f"`{f}`", kind, default, docs[f]["unit"], docs[f]["doc"]))
     rows.append(("`k`", "number > 0", "", "N/m", "both stiffnesses, k_c = k_d = k"))
     return rows
 
 
 def reference_markdown() -> str:
-    """The reference as Markdown: a table per TOML table, its keys in the loader's order."""
-    from .scenarios import KEYS
-
+    """The reference as Markdown: a table per TOML table, its keys in this table's order (the
+    loader's: a test keeps them equal), then ``[params]``, SlipParams' fields. (This module does not
+    import the loader, which reads :data:`KEY_DOCS`.)"""
+    tables: dict[str, list[str]] = {}
+    for table, key in KEY_DOCS:
+        tables.setdefault(table, []).append(key)
     out = []
-    for table, keys in KEYS.items():
+    for table, keys in [*tables.items(), ("params", [])]:
         out.append(f"### {'Top level' if not table else f'[{table}]'}")
         out.append("")
         out.append("| key | type | default | unit | meaning |")

@@ -51,17 +51,23 @@ reference (docs/scenarios.md, from :mod:`.scenario_keys`).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import asdict, dataclass, field, fields, replace
+from dataclasses import fields as dataclass_fields
 from pathlib import Path
 
 import numpy as np
 
 from ..api.files import read_toml
 from ..api.index import get, get_half
+from ..api.numeric import is_real, num
 from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipParams
-from .deadbeat import CONTROLS
+from ..api.validate import limit, limit_text
+from .deadbeat import CONTROLS, control_bounds
+from .plant import ROBOT
+from .raibert import RaibertGains
+from .scenario_keys import KEY_DOCS
 
-__all__ = ["Scenario", "from_dict", "load", "load_scenario", "read_toml", "resized", "KEYS"]
+__all__ = ["Scenario", "ScenarioError", "from_dict", "load", "load_scenario", "read_toml", "resized", "KEYS"]
 
 #: The accepted keys: top level and per table.
 KEYS = {
@@ -98,6 +104,10 @@ KEYS = {
         "retraction_rate",
         "grounds",
         "knots",
+        "raibert",
+        "correction",
+        "correction_gate",
+        "model_loss",
     ),
     "mismatch": ("mass", "stiffness"),
     "noise": ("height", "speed", "seed"),
@@ -105,7 +115,7 @@ KEYS = {
 }
 TERRAINS = ("flat", "steps", "stairs", "random")
 #: The swing-leg policies (module docstring).
-POLICIES = ("apex", "retraction", "time-based")
+POLICIES = ("apex", "retraction", "time-based", "raibert")
 
 
 @dataclass(frozen=True)
@@ -144,6 +154,10 @@ class Scenario:
     retraction_rate: float = 0.0  # rad/s after the apex (policy retraction, or with fixed_angle)
     grounds: tuple[float, float] | None = None  # time-based: the grounds [m] of the policy (default +-0.3 l0)
     knots: int = 64  # time-based: the grounds of the policy's table
+    raibert: RaibertGains = RaibertGains()  # policy raibert: its gains
+    correction: int = 0  # the last hops whose prediction residuals shift the target (0: none)
+    correction_gate: float = 0.01  # m: a hop whose ground changed by more is not averaged
+    model_loss: float = 0.0  # the model's loss: the fraction of the apex speed lost per step
     mismatch_mass: float = 0.0  # the plant's mass is (1 + this) times the controller's
     mismatch_stiffness: float = 0.0  # the plant's springs are (1 + this) times what is commanded
     noise_height: float = 0.0  # standard deviation of the apex height measurement [m]
@@ -151,21 +165,7 @@ class Scenario:
     seed: int = 0
 
     def __post_init__(self):
-        _check_policy(self)
-        n = self.steps
-        for name in ("target_height", "target_speed", "ground"):
-            value = getattr(self, name)
-            if len(value) == 0:
-                default = {
-                    "target_height": self.start_height,
-                    "target_speed": self.start_speed,
-                    "ground": 0.0,
-                }
-                object.__setattr__(self, name, (float(default[name]),) * n)
-            elif len(value) != n:
-                raise ValueError(f"scenario {self.name!r}: {name} has {len(value)} values for {n} steps")
-            else:
-                object.__setattr__(self, name, tuple(float(x) for x in value))
+        _validate(self)
 
     @property
     def policy_grounds(self) -> tuple[float, float]:
@@ -187,6 +187,7 @@ class Scenario:
         for f in fields(self):
             value = getattr(self, f.name)
             out[f.name] = value.as_dict() if isinstance(value, SlipParams) else value
+        out["raibert"] = asdict(self.raibert)
         out["target_height"] = list(self.target_height)
         out["target_speed"] = list(self.target_speed)
         out["ground"] = list(self.ground)
@@ -195,30 +196,267 @@ class Scenario:
         return out
 
 
-def _check_policy(sc: Scenario) -> None:
-    """ValueError (one line) for swing-leg settings that do not go together (module docstring)."""
-    where = f"scenario {sc.name!r}"
-    if sc.policy not in POLICIES:
-        raise ValueError(f"{where}: policy must be one of {', '.join(POLICIES)}, got {sc.policy!r}")
-    rate = sc.retraction_rate
-    if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not math.isfinite(rate):
-        raise ValueError(f"{where}: retraction_rate must be a finite number [rad/s], got {rate!r}")
-    if rate != 0.0 and sc.policy != "retraction" and sc.fixed_angle is None:
-        raise ValueError(
-            f"{where}: retraction_rate is the rate of policy 'retraction' (or of a fixed_angle run); "
-            f"policy is {sc.policy!r}"
-        )
-    if sc.policy == "time-based" and sc.fixed_angle is not None:
-        raise ValueError(f"{where}: a time-based policy is a controller: it cannot go with fixed_angle")
-    if isinstance(sc.knots, bool) or not isinstance(sc.knots, int) or sc.knots < 2:
-        raise ValueError(f"{where}: knots must be an integer >= 2, got {sc.knots!r}")
-    if sc.grounds is not None:
+class ScenarioError(ValueError):
+    """A scenario field out of its domain, one line: ``scenario 'run': steps must be a whole number
+    >= 1, got 2.5``. ``field`` is the :class:`Scenario` field, ``problem`` the words after it; the
+    TOML loader names the file and the key instead (``s.toml: [control] aim: must be ...``)."""
+
+    def __init__(self, scenario: str, field: str, problem: str, form: str = "after") -> None:
+        self.field, self.problem, self.form = field, problem, form
+        text = {"after": f"{field} {problem}", "colon": f"{field}: {problem}", "named": problem}[form]
+        super().__init__(f"scenario {scenario!r}: {text}")
+
+
+class _Refused(Exception):
+    """A field's problem: the words after its name (``form`` "after"), a message of its own after
+    the name and a colon ("colon"), or one that names the field itself ("named")."""
+
+    def __init__(self, problem: str, form: str = "after") -> None:
+        super().__init__(problem)
+        self.problem, self.form = problem, form
+
+
+def _text(x, sc=None):
+    if not isinstance(x, str):
+        raise _Refused(f"must be a string, got {x!r}")
+    return x
+
+
+def _whole(minimum: int):
+    def check(x, sc=None):
+        whole = isinstance(x, (int, np.integer)) and not isinstance(x, bool)
+        if not whole or x < minimum:
+            raise _Refused(f"must be a whole number >= {minimum}, got {repr(int(x)) if whole else num(x)}")
+        return int(x)
+
+    return check
+
+
+def _number(low: float | None = None, *, strict: bool = False, words: str = "", optional: bool = False):
+    """A finite number, at least (``strict``: above) ``low``; ``words`` the domain in words."""
+
+    def check(x, sc=None):
+        if x is None and optional:
+            return None
+        if not is_real(x) or not math.isfinite(x):
+            raise _Refused(f"must be a finite number, got {num(x)}")
+        if low is not None and (x <= low if strict else x < low):
+            raise _Refused(f"{words}, got {num(x)}")
+        return float(x)
+
+    return check
+
+
+def _choice(*choices: str):
+    def check(x, sc=None):
+        if x not in choices:
+            raise _Refused(f"must be one of {', '.join(choices)}, got {x!r}")
+        return x
+
+    return check
+
+
+def _flag(x, sc=None):
+    if not isinstance(x, bool):
+        raise _Refused(f"must be true or false, got {x!r}")
+    return x
+
+
+def _table(x, sc=None):
+    if not isinstance(x, dict):
+        raise _Refused(f"must be a table (a dict) of options, got {x!r}")
+    return dict(x)
+
+
+def _map(lookup):
+    def check(x, sc=None):
         try:
-            low, high = (float(x) for x in sc.grounds)
-        except (TypeError, ValueError):
-            raise ValueError(f"{where}: grounds must be a pair (low, high) [m], got {sc.grounds!r}") from None
-        if not (math.isfinite(low) and math.isfinite(high) and low < high):
-            raise ValueError(f"{where}: grounds must be finite with low < high, got {sc.grounds!r}")
+            lookup(x)
+        except (ValueError, TypeError) as exc:
+            raise _Refused(str(exc), "colon") from None
+        return x
+
+    return check
+
+
+def _plant(x, sc=None):
+    """A map, or the MuJoCo robot (:data:`~.plant.ROBOT`)."""
+    if x == ROBOT:
+        return x
+    try:
+        get(x)
+    except (ValueError, TypeError) as exc:
+        raise _Refused(f"{exc}; or {ROBOT!r}, the MuJoCo robot", "colon") from None
+    return x
+
+
+def _gains(x, sc=None):
+    """Raibert's gains: RaibertGains, or a table of them (its own error naming the gain)."""
+    if isinstance(x, dict):
+        unknown = sorted(set(x) - {f.name for f in dataclass_fields(RaibertGains)})
+        if unknown:
+            raise _Refused(f"has no gain {unknown[0]!r}; Raibert's controller's gains: k_v, k_h, k_i")
+        try:
+            return RaibertGains(**x)
+        except ValueError as exc:
+            raise _Refused(str(exc), "colon") from None
+    if not isinstance(x, RaibertGains):
+        raise _Refused(f"must be RaibertGains or a table of its gains, got {x!r}")
+    return x
+
+
+def _params(x, sc=None):
+    """A SlipParams, or a table of its fields (as the TOML's ``[params]``: the human runner's values
+    where not given, the leg lengths following l0): SlipParams' own error naming the field."""
+    if isinstance(x, SlipParams):
+        return x
+    if isinstance(x, dict):
+        return HUMAN_RUNNER.with_(**x)
+    raise _Refused(f"must be a SlipParams or a table of its fields, got {x!r}")
+
+
+def _controls(x, sc=None):
+    if x is None:
+        return None
+    names = (x,) if isinstance(x, str) else x
+    if not isinstance(names, (list, tuple)) or not names or not all(isinstance(c, str) for c in names):
+        raise _Refused(f"must be a list of control names ({', '.join(CONTROLS)}), got {x!r}")
+    for c in names:
+        if c not in CONTROLS:
+            raise _Refused(f"has an unknown control {c!r}; the controls are {', '.join(CONTROLS)}")
+    return tuple(names)
+
+
+def _bounds(x, sc):
+    if not isinstance(x, dict):
+        raise _Refused(f"must be a table of control: (low, high), got {x!r}")
+    try:
+        control_bounds(sc.params, (), x)  # every key and pair checked, one line naming it
+    except ValueError as exc:
+        raise _Refused(str(exc), "named") from None
+    return {k: tuple(float(v) for v in pair) for k, pair in x.items()}
+
+
+def _angle(x, sc=None):
+    x = _number(optional=True)(x)
+    if x is not None and abs(x) >= 0.5 * math.pi:
+        raise _Refused(f"must lie in (-pi/2, pi/2), got {num(x)}")
+    return x
+
+
+def _grounds(x, sc=None):
+    if x is None:
+        return None
+    try:
+        low, high = x
+    except (TypeError, ValueError):
+        raise _Refused(f"must be a pair (low, high) [m], got {x!r}") from None
+    if not (is_real(low) and is_real(high) and math.isfinite(low) and math.isfinite(high) and low < high):
+        raise _Refused(f"must be finite with low < high, got {x!r}")
+    return (float(low), float(high))
+
+
+def _profile(x, sc):
+    """Per-step values: as many as steps (none: the default), each a finite number."""
+    try:
+        values = tuple(x)
+    except TypeError:
+        raise _Refused(f"must be a sequence of numbers, one per step, got {x!r}") from None
+    if values and len(values) != sc.steps:
+        raise _Refused(f"has {len(values)} values for {sc.steps} steps")
+    bad = next((v for v in values if not is_real(v) or not math.isfinite(v)), None)
+    if bad is not None:
+        raise _Refused(f"must hold finite numbers, got {num(bad)}")
+    return tuple(float(v) for v in values)
+
+
+_POSITIVE = "must be positive"
+_FRACTION = "must be a fraction above -1 (the plant's {} is (1 + it) times the model's)"
+
+#: Each field's check, in the fields' order (steps before the per-step profiles, params before the
+#: bounds): the value it stores, or :class:`_Refused`.
+_CHECKS = {
+    "name": _text,
+    "description": _text,
+    "steps": _whole(1),
+    "start_height": _number(0.0, words="must not be negative"),
+    "start_speed": _number(),
+    "target_height": _profile,
+    "target_speed": _profile,
+    "ground": _profile,
+    "known": _whole(0),
+    "model": _map(get),
+    "model_options": _table,
+    "plant": _plant,
+    "plant_options": _table,
+    "params": _params,
+    "controls": _controls,
+    "bounds": _bounds,
+    "two_stage": _flag,
+    "decompression": _map(get_half),
+    "aim": _choice("both", "height", "speed"),
+    "min_height": _number(0.0, strict=True, words=_POSITIVE, optional=True),
+    "fixed_angle": _angle,
+    "jacobian": _choice("broyden", "newton"),
+    "tol": _number(0.0, strict=True, words=_POSITIVE),
+    "policy": _choice(*POLICIES),
+    "retraction_rate": _number(),
+    "grounds": _grounds,
+    "knots": _whole(2),
+    "raibert": _gains,
+    "correction": _whole(0),
+    "correction_gate": _number(0.0, strict=True, words=_POSITIVE),
+    "model_loss": _number(0.0, words="must be a fraction in [0, 1)"),
+    "mismatch_mass": _number(-1.0, strict=True, words=_FRACTION.format("mass")),
+    "mismatch_stiffness": _number(-1.0, strict=True, words=_FRACTION.format("stiffness")),
+    "noise_height": _number(0.0, words="must not be negative"),
+    "noise_speed": _number(0.0, words="must not be negative"),
+    "seed": _whole(0),
+}
+
+
+def _validate(sc: Scenario) -> None:
+    """Every field checked (:data:`_CHECKS`) and stored as checked (tuples of floats...), the
+    per-step profiles filled, then the settings that must go together (a robot plant has no mass or
+    stiffness mismatch, and without parameters given its controller's are the robot's nominal
+    SLIP; the swing-leg settings); ScenarioError (one line naming the field) for the first that is
+    wrong."""
+    name = sc.name if isinstance(sc.name, str) else "run"
+    for f, check in _CHECKS.items():
+        try:
+            object.__setattr__(sc, f, check(getattr(sc, f), sc))
+        except _Refused as bad:
+            raise ScenarioError(name, f, bad.problem, bad.form) from None
+    if sc.model_loss >= 1.0:
+        raise ScenarioError(name, "model_loss", f"must be a fraction in [0, 1), got {num(sc.model_loss)}")
+    if sc.plant == ROBOT:
+        for key in ("mismatch_mass", "mismatch_stiffness"):
+            if getattr(sc, key) != 0.0:
+                problem = "is for a map plant; the robot's masses and springs are its own (its plant options)"
+                raise ScenarioError(name, key, problem)
+        if sc.params is HUMAN_RUNNER:  # not given: the model is the robot's nominal SLIP
+            from ..robot.settings import robot_settings
+
+            object.__setattr__(sc, "params", robot_settings(sc.plant_options).params.slip_params())
+    defaults = {"target_height": sc.start_height, "target_speed": sc.start_speed, "ground": 0.0}
+    for f, default in defaults.items():
+        if not getattr(sc, f):
+            object.__setattr__(sc, f, (float(default),) * sc.steps)
+    rate = sc.retraction_rate
+    if rate != 0.0 and sc.policy != "retraction" and sc.fixed_angle is None:
+        raise ScenarioError(
+            name,
+            "retraction_rate",
+            f"is the rate of policy 'retraction' (or of a fixed_angle run); policy is {sc.policy!r}",
+        )
+    if abs(rate) > limit("retraction_rate", sc.params):  # the maps' range (derive/params.py)
+        raise ScenarioError(
+            name,
+            "retraction_rate",
+            f"must lie in {limit_text('retraction_rate', sc.params)}, got {num(rate)}",
+        )
+    if sc.policy in ("time-based", "raibert") and sc.fixed_angle is not None:
+        raise ScenarioError(name, "policy", f"{sc.policy!r} is a controller: it cannot go with fixed_angle")
 
 
 class _Keys:
@@ -240,6 +478,13 @@ class _Keys:
 
     def fail(self, key: str, problem: str):
         raise ValueError(f"{self.where}: {self.label}{key}: {problem}")
+
+    def field(self, key: str, field: str, default):
+        """The key's value checked as the Scenario field ``field`` is (:data:`_CHECKS`)."""
+        try:
+            return _CHECKS[field](self.data.get(key, default))
+        except _Refused as bad:
+            self.fail(key, bad.problem)
 
     def number(self, key: str, default=None, *, positive=False, non_negative=False, value=None):
         x = self.data.get(key, default) if value is None else value
@@ -267,17 +512,11 @@ class _Keys:
             self.fail(key, f"must be a string, got {x!r}")
         return x
 
-    def flag(self, key: str, default=False):
-        x = self.data.get(key, default)
-        if not isinstance(x, bool):
-            self.fail(key, f"must be true or false, got {x!r}")
-        return x
-
     def table(self, key: str) -> _Keys:
         return _Keys(self.where, key if not self.name else f"{self.name}.{key}", self.data.get(key, {}))
 
 
-def _profile(keys: _Keys, key: str, steps: int, start: float) -> tuple[float, ...]:
+def _profile_of(keys: _Keys, key: str, steps: int, start: float) -> tuple[float, ...]:
     """A number, a list per step (the last value held), or a ramp {from, to, steps, start}."""
     x = keys.data.get(key, start)
     if isinstance(x, dict):
@@ -312,7 +551,7 @@ def _terrain(keys: _Keys, steps: int) -> tuple[tuple[float, ...], int]:
     kind = keys.text("kind", "flat")
     if kind not in TERRAINS:
         keys.fail("kind", f"must be one of {', '.join(TERRAINS)}, got {kind!r}")
-    known = keys.integer("known", 3)
+    known = keys.field("known", "known", 3)
     allowed = {
         "flat": {"kind", "known"},
         "steps": {"kind", "known", "heights"},
@@ -327,7 +566,7 @@ def _terrain(keys: _Keys, steps: int) -> tuple[tuple[float, ...], int]:
     if kind == "steps":
         if "heights" not in keys.data:
             keys.fail("heights", "kind 'steps' needs the ground height of each touchdown, heights = [...]")
-        return _profile(keys, "heights", steps, 0.0), known
+        return _profile_of(keys, "heights", steps, 0.0), known
     if kind == "stairs":
         rise = keys.number("rise", 0.1)
         before = keys.integer("before", 2)
@@ -346,137 +585,114 @@ def _terrain(keys: _Keys, steps: int) -> tuple[tuple[float, ...], int]:
     return tuple(float(x) for x in np.cumsum(changes)), known
 
 
-def _fraction(keys: _Keys, key: str) -> float:
-    x = keys.number(key, 0.0)
-    if x <= -1.0:
-        keys.fail(key, f"a fraction above -1 (the plant's {key} is (1 + it) times the model's), got {x!r}")
-    return x
+#: The TOML key of each Scenario field: the scenario reference's (:mod:`.scenario_keys`), and the
+#: keys whose values the loader shapes into a field (the profiles, the terrain's grounds, params).
+_KEY_OF = {doc[4]: key for key, doc in KEY_DOCS.items() if doc[4] is not None} | {
+    "name": ("", "name"),
+    "target_height": ("targets", "height"),
+    "target_speed": ("targets", "speed"),
+    "ground": ("terrain", "heights"),
+    "params": ("", "params"),
+    "raibert": ("control", "raibert"),
+}
+
+
+def _plant_of(top: _Keys) -> tuple[str, dict]:
+    """The plant and its options: ``plant = "NAME"`` with ``[plant_options]``, or a table ``[plant]``
+    of ``kind`` and the options (a map's, or the robot's: ``slipmaps.runtime.robot``)."""
+    raw = top.data.get("plant", "exact")
+    options = top.data.get("plant_options", {})
+    if not isinstance(options, dict):
+        top.fail("plant_options", f"must be a table of the plant's options, got {options!r}")
+    if isinstance(raw, dict):
+        if "plant_options" in top.data:
+            top.fail("plant_options", "give the options in the [plant] table (beside kind), not both")
+        table = top.table("plant")
+        kind = table.text("kind")
+        if kind is None:
+            table.fail("kind", f"the plant's kind: a map name or {ROBOT!r}")
+        options = {k: v for k, v in raw.items() if k != "kind"}
+    else:
+        kind = top.text("plant", "exact")
+    if kind != ROBOT:
+        try:
+            get(kind)
+        except ValueError as exc:
+            top.fail("plant", f"{exc}; or {ROBOT!r}, the MuJoCo robot")
+    else:
+        from ..robot.settings import robot_settings
+
+        try:
+            robot_settings(options)
+        except ValueError as exc:
+            top.fail("plant", str(exc))
+    return kind, dict(options)
+
+
+def _raibert_of(control: _Keys) -> RaibertGains:
+    """``[control.raibert]``: the gains of Raibert's controller (k_v, k_h, k_i), each >= 0."""
+    gains = control.table("raibert")
+    unknown = sorted(set(gains.data) - {f.name for f in dataclass_fields(RaibertGains)})
+    if unknown:
+        gains.fail(unknown[0], "is not a gain of Raibert's controller (k_v, k_h, k_i)")
+    return RaibertGains(**{k: gains.number(k, non_negative=True) for k in gains.data})
+
+
+def _params_table(keys: _Keys) -> SlipParams:
+    """``[params]``: SlipParams fields over the human runner's (leg lengths following l0)."""
+    values = {k: keys.number(k) for k in keys.data}
+    try:
+        return HUMAN_RUNNER.with_(**values) if values else HUMAN_RUNNER
+    except (ParamError, ParamTypeError) as exc:
+        keys.fail(exc.field, f"{exc.problem}, got {num(exc.value)}")
+    except ValueError as exc:  # k with k_c or k_d: SlipParams names them
+        keys.fail(next(iter(keys.data)), str(exc))
 
 
 def from_dict(data: dict, where: str = "scenario") -> Scenario:
     """A scenario from a table of the TOML keys (module docstring); ValueError naming the key."""
     top = _Keys(where, "", data)
-    steps = top.integer("steps", 10, minimum=1)
-    start = top.table("start")
-    h0 = start.number("height", 1.0, non_negative=True)
-    v0 = start.number("speed", 5.0)
-    targets = top.table("targets")
-    terrain = top.table("terrain")
-    ground, known = _terrain(terrain, steps)
-    control = top.table("control")
-    pk = top.table("params")
+    tables = {t: top.table(t) for t in KEYS if t and t != "params"}
+    steps = top.field("steps", "steps", 10)
+    start = tables["start"]
+    h0 = start.field("height", "start_height", 1.0)
+    v0 = start.field("speed", "start_speed", 5.0)
+    ground, known = _terrain(tables["terrain"], steps)
+    given = {}
+    for (table, key), doc in KEY_DOCS.items():
+        source = data if not table else tables[table].data
+        if doc[4] is not None and key in source:
+            given[doc[4]] = source[key]
+    given |= {
+        "name": data.get("name", Path(where).stem if where != "scenario" else "run"),
+        "steps": steps,
+        "start_height": h0,
+        "start_speed": v0,
+        "target_height": _profile_of(tables["targets"], "height", steps, h0),
+        "target_speed": _profile_of(tables["targets"], "speed", steps, v0),
+        "ground": ground,
+        "known": known,
+        "params": _params_table(top.table("params")),
+        "raibert": _raibert_of(tables["control"]),
+    }
+    given["plant"], given["plant_options"] = _plant_of(top)
     try:
-        params = (
-            HUMAN_RUNNER.with_(**{k: pk.number(k, positive=True) for k in pk.data})
-            if pk.data
-            else HUMAN_RUNNER
-        )
-    except (ParamError, ParamTypeError) as exc:
-        pk.fail(exc.field, f"{exc.problem}, got {exc.value!r}")
-    except ValueError as exc:
-        pk.fail(next(iter(pk.data)), str(exc))
-    mismatch = top.table("mismatch")
-    noise = top.table("noise")
-    name = top.text("name", Path(where).stem if where != "scenario" else "run")
-    model = top.text("model", "iterative")
-    plant = top.text("plant", "exact")
-    for key, value in (("model", model), ("plant", plant)):
-        try:
-            get(value)
-        except ValueError as exc:
-            top.fail(key, str(exc))
-    controls = control.data.get("controls")
-    if isinstance(controls, str):
-        controls = [controls]
-    if controls is not None and (
-        not isinstance(controls, list) or not all(isinstance(c, str) for c in controls)
-    ):
-        control.fail("controls", f"must be a list of control names, got {controls!r}")
-    for c in controls or ():
-        if c not in CONTROLS:
-            control.fail("controls", f"unknown control {c!r}; the controls are {', '.join(CONTROLS)}")
-    bounds_keys = control.table("bounds")
-    bounds = {}
-    for key, pair in bounds_keys.data.items():
-        if key not in CONTROLS:
-            bounds_keys.fail(key, f"is not a control; the controls are {', '.join(CONTROLS)}")
-        if not (isinstance(pair, list) and len(pair) == 2):
-            bounds_keys.fail(key, f"must be a pair [low, high], got {pair!r}")
-        bounds[key] = tuple(bounds_keys.number(key, value=x) for x in pair)
-    decompression = control.text("decompression", "iterative-decompression")
-    try:
-        get_half(decompression)
-    except ValueError as exc:
-        control.fail("decompression", str(exc))
-    aim = control.text("aim", "both")
-    if aim not in ("both", "height", "speed"):
-        control.fail("aim", f"must be both, height or speed, got {aim!r}")
-    jacobian = control.text("jacobian", "broyden")
-    if jacobian not in ("broyden", "newton"):
-        control.fail("jacobian", f"must be broyden or newton, got {jacobian!r}")
-    fixed = control.number("fixed_angle")
-    if fixed is not None and abs(fixed) >= 0.5 * math.pi:
-        control.fail("fixed_angle", f"must satisfy |angle| < pi/2, got {fixed!r}")
-    for key in ("model_options", "plant_options"):
-        if not isinstance(data.get(key, {}), dict):
-            top.fail(key, f"must be a table of the map's options, got {data[key]!r}")
-    policy = control.text("policy", "apex")
-    if policy not in POLICIES:
-        control.fail("policy", f"must be one of {', '.join(POLICIES)}, got {policy!r}")
-    rate = control.number("retraction_rate", 0.0)
-    if rate != 0.0 and policy != "retraction" and fixed is None:
-        control.fail(
-            "retraction_rate",
-            f"is the rate of policy 'retraction' (or of a fixed_angle run); policy is {policy!r}",
-        )
-    if policy == "time-based" and fixed is not None:
-        control.fail("policy", "a time-based policy is a controller: it cannot go with fixed_angle")
-    grounds = control.data.get("grounds")
-    if grounds is not None:
-        if not (isinstance(grounds, list) and len(grounds) == 2):
-            control.fail("grounds", f"must be a pair [low, high] [m], got {grounds!r}")
-        grounds = tuple(control.number("grounds", value=x) for x in grounds)
-        if not grounds[0] < grounds[1]:
-            control.fail("grounds", f"must have low < high, got {list(grounds)!r}")
-    knots = control.integer("knots", 64, minimum=2)
-    return Scenario(
-        name=name,
-        description=top.text("description", ""),
-        steps=steps,
-        start_height=h0,
-        start_speed=v0,
-        target_height=_profile(targets, "height", steps, h0),
-        target_speed=_profile(targets, "speed", steps, v0),
-        ground=ground,
-        known=known,
-        model=model,
-        model_options=dict(data.get("model_options", {})),
-        plant=plant,
-        plant_options=dict(data.get("plant_options", {})),
-        params=params,
-        controls=None if controls is None else tuple(controls),
-        bounds=bounds,
-        two_stage=control.flag("two_stage", False),
-        decompression=decompression,
-        aim=aim,
-        min_height=control.number("min_height", positive=True),
-        fixed_angle=fixed,
-        jacobian=jacobian,
-        tol=control.number("tol", 1e-9, positive=True),
-        policy=policy,
-        retraction_rate=rate,
-        grounds=grounds,
-        knots=knots,
-        mismatch_mass=_fraction(mismatch, "mass"),
-        mismatch_stiffness=_fraction(mismatch, "stiffness"),
-        noise_height=noise.number("height", 0.0, non_negative=True),
-        noise_speed=noise.number("speed", 0.0, non_negative=True),
-        seed=noise.integer("seed", 0),
-    )
+        return Scenario(**given)
+    except ScenarioError as exc:
+        table, key = _KEY_OF[exc.field]
+        label = f"[{table}] " if table else ""
+        if exc.form == "named":
+            raise ValueError(f"{where}: {label}{exc.problem}") from None
+        raise ValueError(f"{where}: {label}{key}: {exc.problem}") from None
 
 
 def resized(sc: Scenario, steps: int) -> Scenario:
-    """The scenario with ``steps`` steps: its per-step profiles cut, or their last value held."""
+    """The scenario with ``steps`` steps: its per-step profiles cut, or their last value held
+    (ScenarioError for a ``steps`` that is not a whole number >= 1)."""
+    try:
+        steps = _CHECKS["steps"](steps)
+    except _Refused as bad:
+        raise ScenarioError(sc.name, "steps", bad.problem) from None
 
     def fit(values):
         values = list(values)

@@ -85,6 +85,10 @@ _EXPORTS = {
     "Run": "slipmaps.runtime.control.runs",
     "RunBatch": "slipmaps.runtime.control.runs",
     "Scenario": "slipmaps.runtime.control.scenarios",
+    "identify": "slipmaps.runtime.control.identify",
+    "Identified": "slipmaps.runtime.control.identify",
+    "Hops": "slipmaps.runtime.control.identify",
+    "RaibertGains": "slipmaps.runtime.control.raibert",
     "load_scenario": "slipmaps.runtime.control.scenarios",
 }
 

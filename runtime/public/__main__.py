@@ -4,4 +4,5 @@ import sys
 
 from slipmaps.runtime.cli import main
 
-sys.exit(main())
+if __name__ == "__main__":  # not again in a process a study spawns (multiprocessing re-imports it)
+    sys.exit(main())

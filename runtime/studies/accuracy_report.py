@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..api.paths import save_figure
 from . import study as pipeline
 from .accuracy import (
     GridRun,
@@ -403,9 +404,7 @@ def figure(record: dict, path: str | Path) -> Path:
         bottom.suptitle(f"{yu['name']}: mean over apex heights 0.95-1.05 m and speeds 2-6 m/s", fontsize=11)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8, ncol=2)
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return Path(path)
+    return save_figure(fig, path, dpi=100)
 
 
 class AccuracyStudy(pipeline.Study):

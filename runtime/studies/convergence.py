@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from ..api import index
+from ..api.paths import save_figure
 from . import study as pipeline
 from .accuracy import Variant, measure_all, options_with
 from .accuracy_report import from_json, summarize
@@ -235,9 +236,7 @@ def figure(summary: list[dict], path: str | Path) -> Path:
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return Path(path)
+    return save_figure(fig, path, dpi=100)
 
 
 class ConvergenceStudy(pipeline.Study):

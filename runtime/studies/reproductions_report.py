@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ..api.index import EXACT
+from ..api.paths import save_figure
 from . import study as pipeline
 from .report_format import fails, pct, sig
 from .reproductions import measure
@@ -558,9 +559,7 @@ def figure(record: dict, path: str | Path) -> Path:
     _seyfarth_panel(axes[1, 0], record["seyfarth"])
     _drake_panel(axes[1, 1], record["drake"], list(record["seyfarth"]["return_map"]["next"]))
     _heim_panels(axes[2, 0], axes[2, 1], record["heim"])
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return Path(path)
+    return save_figure(fig, path, dpi=100)
 
 
 class ReproductionsStudy(pipeline.Study):

@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ..api.index import EXACT
+from ..api.paths import save_figure
 from . import study as pipeline
 from .report_format import sig
 from .stability import measure
@@ -474,9 +475,7 @@ def figure(record: dict, path: str | Path) -> Path:
         ax.set_visible(False)
     fig.colorbar(im, ax=axes, label="smallest abs(eigenvalue) of a self-stable fixed point")
     fig.suptitle(f"{REGION_TITLE}\n{REGION_MARKS}", fontsize=9)
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return Path(path)
+    return save_figure(fig, path, dpi=100)
 
 
 class StabilityStudy(pipeline.Study):

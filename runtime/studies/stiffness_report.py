@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from ..api.paths import save_figure
 from . import study as pipeline
 from .report_format import fails, pct, sig
 from .stiffness import BOTTOM_MAP, ERRORS, SUBSAMPLED, measure, summarize, variants
@@ -353,9 +354,7 @@ def figure(record: list[dict], path: str | Path) -> Path:
         "Max (solid) and mean (dotted) error over the compared steps; shaded: the target range", fontsize=11
     )
     fig.tight_layout(rect=(0, 0.06, 1, 0.97))
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return Path(path)
+    return save_figure(fig, path, dpi=100)
 
 
 class StiffnessStudy(pipeline.Study):
