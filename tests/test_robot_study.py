@@ -57,7 +57,9 @@ def test_the_studys_inputs_are_seeded_and_in_their_ranges():
         assert min(speeds) >= 3.0 and max(speeds) <= 5.0 and np.abs(np.diff(speeds)).max() <= 0.3
     ctl = controllers({"params": None, "model_loss": 0.02}, {"k_v": 0.3, "score": 0.1})
     assert list(ctl) == ["Raibert", "slipmaps", "slipmaps, identified", "slipmaps, identified + correction"]
-    assert ctl["Raibert"]["raibert"].k_v == 0.3 and ctl["slipmaps, identified + correction"]["correction"] == 3
+    assert (
+        ctl["Raibert"]["raibert"].k_v == 0.3 and ctl["slipmaps, identified + correction"]["correction"] == 3
+    )
 
 
 def test_the_record_is_json_with_no_nan_in_the_page(record):
