@@ -3,9 +3,10 @@
 Read from the sources (``ast``), every import counted, also those inside functions:
 
 - a module of ``runtime/<package>/`` imports only from packages at its level or below:
-  ``api`` < ``exact``, ``robot`` < ``analysis``, ``sweep``, ``studies``, ``control`` < ``report``,
-  ``export`` < ``cli`` (the top-level package ``runtime/public`` sits above them all); a backend is
-  found by name from the index, not imported by the API;
+  ``api`` < ``exact``, ``robot`` < ``analysis``, ``sweep``, ``control`` < ``studies`` (the robot
+  study runs the controllers), ``export`` < ``report`` < ``cli`` (the top-level package
+  ``runtime/public`` sits above them all); a backend is found by name from the index, not imported
+  by the API;
 - the modules' import graph has no cycle;
 - no module imports another's private name (``from .x import _y``);
 - the runtime never imports ``derive`` but its plain-data parameter table (``derive/params.py``).
@@ -26,12 +27,12 @@ RANK = {
     "robot": 1,
     "analysis": 2,
     "sweep": 2,
-    "studies": 2,
     "control": 2,
-    "report": 3,
+    "studies": 3,
     "export": 3,
-    "cli": 4,
-    "public": 5,
+    "report": 4,
+    "cli": 5,
+    "public": 6,
 }
 
 

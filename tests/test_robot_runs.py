@@ -145,3 +145,24 @@ def test_identification_on_robot_hops_predicts_better_than_the_nominal_slip():
     assert after["height_mean"] < 0.5 * before["height_mean"]
     assert after["speed_rel_mean"] < 0.3 * before["speed_rel_mean"] and after["speed_rel_mean"] < 0.005
     assert 0.0 < got.loss < 0.06 and math.isfinite(got.k_factor)
+
+
+def test_without_mujoco_the_command_line_names_the_extra(monkeypatch, capsys):
+    """A robot scenario where MuJoCo is not installed: one line naming the extra, exit 2."""
+    import importlib
+
+    from slipmaps.runtime.robot import mj
+
+    real = importlib.import_module
+
+    def missing(name, *args):
+        if name == "mujoco":
+            raise ImportError("No module named 'mujoco'")
+        return real(name, *args)
+
+    monkeypatch.setattr(mj.importlib, "import_module", missing)
+    assert main(["run", str(EXAMPLES / "robot_raibert.toml"), "--steps", "2", "--no-figure"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [
+        "slipmaps run: error: the robot (slipmaps.runtime.robot) needs MuJoCo: pip install 'slipmaps[robot]'"
+    ]

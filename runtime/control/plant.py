@@ -23,7 +23,8 @@ A constant-stiffness plant (``geyer``, the gravity corrections) takes k = k_c an
 whose k_d differs (INVALID_INPUT).
 
 The plant interface (what :func:`~slipmaps.runtime.control.runs.run_batch` calls; :class:`Plant`
-implements it for every map, :class:`~.robot_plant.RobotPlant` for the MuJoCo robot):
+implements it for every map, ``slipmaps.runtime.control.robot_plant.RobotPlant`` for the
+MuJoCo robot; ``slipmaps.runtime.control.runs.make_plant`` picks the scenario's):
 ``start(scenario, grounds, seeds)`` once before a batch's first step (a map plant has nothing to set
 up; a robot places one robot per run on its terrain), ``step``, ``compress`` and ``decompress``
 with the rows' run indices ``rows`` (a map plant is stateless and ignores them; a robot steps those
@@ -51,7 +52,7 @@ from ..api.index import halves
 from ..api.names import Renamed
 from ..api.params import SlipParams
 
-__all__ = ["Compressed", "Plant", "PlantSteps", "ROBOT", "ascent", "make_plant"]
+__all__ = ["Compressed", "Plant", "PlantSteps", "ROBOT", "ascent"]
 
 #: The plant that is not a map: the MuJoCo monoped (``slipmaps.runtime.robot``; the extra ``robot``).
 ROBOT = "mujoco"
@@ -334,17 +335,6 @@ class Compressed:
 
 
 _COMPRESSED = ("status", "touchdown", "t_descent", "foot_x", "t_bottom", "bottom", "ground", "k_c")
-
-
-def make_plant(scenario):
-    """The plant of a scenario (:class:`~.scenarios.Scenario`): its map, with the model mismatch
-    (the mass (1 + ``mismatch_mass``) times the controller's), or the MuJoCo robot (:data:`ROBOT`)."""
-    if scenario.plant == ROBOT:
-        from .robot_plant import RobotPlant
-
-        return RobotPlant(scenario)
-    p = scenario.params
-    return Plant(scenario.plant, p.with_(m=p.m * (1.0 + scenario.mismatch_mass)), **scenario.plant_options)
 
 
 def _blank(out: PlantSteps) -> PlantSteps:

@@ -72,7 +72,7 @@ from . import compiled
 from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
 from .planner import plan_targets
-from .plant import ROBOT, Plant, make_plant
+from .plant import ROBOT, Plant
 from .raibert import raibert_controls
 from .scenarios import Scenario, from_dict, load, resized
 from .swing import policy_tables
@@ -84,6 +84,7 @@ __all__ = [
     "V_REVERSE",
     "check",
     "check_memory",
+    "make_plant",
     "memory_estimate",
     "run",
     "run_batch",
@@ -470,6 +471,17 @@ class _Controller:
             low, high = sc.policy_grounds
             self.grid = np.linspace(high, low, sc.knots)  # the highest ground first (swing.py)
             self.model_plant = Plant(sc.model, p, **sc.model_options)
+
+
+def make_plant(scenario):
+    """The plant of a scenario (:class:`~.scenarios.Scenario`): its map, with the model mismatch
+    (the mass (1 + ``mismatch_mass``) times the controller's), or the MuJoCo robot (:data:`ROBOT`)."""
+    if scenario.plant == ROBOT:
+        from .robot_plant import RobotPlant  # MuJoCo, only for a robot scenario
+
+        return RobotPlant(scenario)
+    p = scenario.params
+    return Plant(scenario.plant, p.with_(m=p.m * (1.0 + scenario.mismatch_mass)), **scenario.plant_options)
 
 
 def check(sc: Scenario) -> None:
