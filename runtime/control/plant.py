@@ -51,7 +51,7 @@ from ..api.calls import KERNELS, Call
 from ..api.index import halves
 from ..api.params import SlipParams
 
-__all__ = ["Compressed", "Plant", "PlantSteps", "ROBOT", "ascent"]
+__all__ = ["Compressed", "Plant", "PlantSteps", "ROBOT", "ascent", "blank_failed"]
 
 #: The plant that is not a map: the MuJoCo monoped (``slipmaps.runtime.robot``; the extra ``robot``).
 ROBOT = "mujoco"
@@ -236,7 +236,7 @@ class Plant:
             k_d=kd,
             ground=first.ground,
         )
-        return _blank(out)
+        return blank_failed(out)
 
     # ------------------------------------------------------------------------------------------
     def _half(self, start: str):
@@ -333,7 +333,7 @@ class Compressed:
 _COMPRESSED = ("status", "touchdown", "t_descent", "foot_x", "t_bottom", "bottom", "ground", "k_c")
 
 
-def _blank(out: PlantSteps) -> PlantSteps:
+def blank_failed(out: PlantSteps) -> PlantSteps:
     """NaN in every value of a row that failed (never a silent number from a failed step)."""
     bad = out.status != 0
     if bad.any():

@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 from ..robot.settings import robot_settings
-from .plant import Compressed, PlantSteps
+from .plant import Compressed, PlantSteps, blank_failed
 
 __all__ = ["COLUMNS", "RobotPlant"]
 
@@ -239,13 +239,7 @@ class RobotPlant:
             steps.extras[c] = np.where(np.isfinite(steps.extras[c]), steps.extras[c], descended)
         ok = status == 0
         self._ground[rows[ok]] = np.array([h.ground for h in hops if h is not None and h.ok])
-        bad = ~ok
-        for name in ("t_descent", "foot_x", "t_bottom", "t_stance", "t_ascent", "apex_height", "apex_speed"):
-            getattr(steps, name)[bad] = math.nan
-        steps.step_length[bad] = math.nan
-        for name in ("touchdown", "bottom", "liftoff"):
-            getattr(steps, name)[bad] = math.nan
-        return steps
+        return blank_failed(steps)
 
 
 def _row(tables, i: int):
