@@ -239,7 +239,7 @@ class RobotPlant:
             steps.extras[c] = np.where(np.isfinite(steps.extras[c]), steps.extras[c], descended)
         ok = status == 0
         self._ground[rows[ok]] = np.array([h.ground for h in hops if h is not None and h.ok])
-        return blank_failed(steps)  # NaN in the failed rows, as a map plant's
+        return blank_failed(steps)
 
 
 def _row(tables, i: int):
