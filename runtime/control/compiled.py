@@ -844,10 +844,25 @@ class Solver:
             return 0, self.x.index(name)
         return 1, self.p.index(name)
 
-    def settings(self, controls, lo, hi, scale, *, targeted, fd_step=0.0, kd=None, kd_bounds, **fields):
+    def settings(
+        self,
+        controls,
+        lo,
+        hi,
+        scale,
+        *,
+        targeted,
+        fd_step=0.0,
+        kd=None,
+        kd_bounds,
+        targets=("apex_height", "apex_speed"),
+        **fields,
+    ):
         """:class:`Settings` for the ``controls`` (names of the model's inputs or parameters) with
         their bounds ``lo``, ``hi`` and scales, the ``targeted`` components, k_d (the name of the
-        energy budget's stiffness, None for none) and its bounds; ``fields`` the rest."""
+        energy budget's stiffness, None for none) and its bounds; ``targets``: the model's two
+        outputs the targets are of (the next apex's height and speed; the footholds' baseline aims
+        the foot, ``foot_x``, and the speed); ``fields`` the rest."""
         places = [self.place(c) for c in controls]
         pad = 3 - len(controls)
         kd_place = self.place(kd) if kd is not None else (1, -1)
@@ -863,8 +878,8 @@ class Solver:
             n_out=len(self.outputs),
             n_wrt=len(self.wrt),
             fd_step=fd_step,
-            out_height=self.outputs.index("apex_height"),
-            out_speed=self.outputs.index("apex_speed"),
+            out_height=self.outputs.index(targets[0]),
+            out_speed=self.outputs.index(targets[1]),
             kd_in_p=kd_place[0],
             kd_pos=kd_place[1],
             kd_lo=kd_bounds[0],

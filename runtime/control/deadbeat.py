@@ -670,6 +670,7 @@ class Deadbeat:
             broyden=int(jacobian == "broyden"),
             scan=scan,
         )
+        self.fields = fields  # the solver's settings but the targeted components (footholds' baseline)
         self._settings = {t: self.solver.settings(targeted=t, **fields) for t in ((1, 1), (1, 0), (0, 1))}
         places = [self.solver.place(n) for n in names]
         self._clip = tuple((at, *self.bounds[c]) for at, c in zip(places, self.controls, strict=True))
