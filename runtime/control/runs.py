@@ -71,10 +71,12 @@ from ..api.validate import POLAR_NAMES, real_array
 from . import compiled
 from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
+from .footholds_runs import FOOTHOLD, NO_FOOTHOLD, StonesRuns
 from .planner import plan_targets
 from .plant import ROBOT, Plant
 from .raibert import raibert_controls
 from .scenarios import Scenario, from_dict, load, resized
+from .stones import MISSED, MISSED_NAME
 from .swing import policy_tables
 
 __all__ = [
@@ -90,6 +92,7 @@ __all__ = [
     "run_batch",
     "PLAN_MEANINGS",
     "PLAN_NAMES",
+    "plant_status_name",
     "scenario_of",
 ]
 
@@ -108,6 +111,8 @@ PLAN_NAMES = {
     FIXED: "FIXED",
     NOT_RUN: "-",
     FEEDBACK: "FEEDBACK",
+    FOOTHOLD: "FOOTHOLD",
+    NO_FOOTHOLD: "NO_FOOTHOLD",
 }
 #: What each plan status promises (the table's legend): the controller's, on its model.
 PLAN_MEANINGS = {
@@ -119,7 +124,18 @@ PLAN_MEANINGS = {
     "OUT_OF_RANGE": "the ground outside the time-based policy's grounds (its end controls held)",
     "FIXED": "no controller: the fixed angle and the nominal stiffness",
     "FEEDBACK": "Raibert's feedback controller: no model, nothing planned",
+    "FOOTHOLD": "the model's feet inside their stones' usable parts over the footholds' horizon",
+    "NO_FOOTHOLD": "no stone sequence keeps the model's feet inside their stones: the closest one's controls",
 }
+#: The name of a plant status code in the records: the plant's (Status), or a run's own (MISSED).
+_PLANT_NAMES = {int(s): s.name for s in Status} | {MISSED: MISSED_NAME}
+
+
+def plant_status_name(code: int) -> str:
+    """The name of a plant status code of a run's records (``Status``'s, or ``MISSED``)."""
+    return _PLANT_NAMES[int(code)]
+
+
 #: What a former name's warning says it was read on.
 _WHERE = "a run"
 #: The leg's angle recorded at this many evenly spaced times of each descent (``swing``).
@@ -320,7 +336,7 @@ class Run:
             row |= {k: v[self.index, n].tolist() for k, v in self.batch.states.items()}
             row["plan_status"] = PLAN_NAMES[int(self.batch.codes["plan_status"][self.index, n])]
             row["bottom_status"] = PLAN_NAMES[int(self.batch.codes["bottom_status"][self.index, n])]
-            row["plant_status"] = Status(int(self.batch.codes["plant_status"][self.index, n])).name
+            row["plant_status"] = plant_status_name(self.batch.codes["plant_status"][self.index, n])
             row["step"] = n
             out.append(row)
         return out
@@ -335,7 +351,11 @@ class Run:
         out |= flat_columns(states, 1, {k: [f"{k}_{q}" for q in POLAR_NAMES] for k in states})
         for k in ("plan_status", "bottom_status"):
             out[k] = np.array([PLAN_NAMES[int(c)] for c in self.batch.codes[k][i, :n]], dtype=object)
-        return out | status_columns(self.batch.codes["plant_status"][i, :n], "plant_status")
+        codes = self.batch.codes["plant_status"][i, :n]
+        if (codes == MISSED).any():  # a run's own status (a stones course): named here
+            names = np.array([plant_status_name(c) for c in codes], dtype=object)
+            return out | {"plant_status": names, "plant_status_code": codes}
+        return out | status_columns(codes, "plant_status")
 
     def to_pandas(self):
         """A pandas DataFrame of :meth:`columns`, a row per step."""
@@ -346,8 +366,8 @@ class Run:
         n = len(self)
         if not self.fell:
             return f"completed {n} steps"
-        last = Status(int(self.batch.codes["plant_status"][self.index, n - 1]))
-        return f"fell at step {n - 1}: {last.name}"
+        last = plant_status_name(self.batch.codes["plant_status"][self.index, n - 1])
+        return f"fell at step {n - 1}: {last}"
 
     def errors(self) -> tuple[np.ndarray, np.ndarray]:
         dh, dv = self.batch.errors()
@@ -433,7 +453,7 @@ class _Controller:
         self.fixed = sc.fixed_angle is not None
         self.raibert = sc.policy == "raibert"
         self.deadbeat = None
-        if not (self.fixed or self.raibert):
+        if not (self.fixed or self.raibert or sc.policy == "footholds"):
             self.deadbeat = Deadbeat(
                 sc.model,
                 p,
@@ -451,6 +471,8 @@ class _Controller:
             BottomDeadbeat(sc.decompression, p, bounds=self.k_d_bounds, aim=sc.aim) if sc.two_stage else None
         )
         self.plant = make_plant(sc)
+        # stepping stones: the footholds planner, each run's x and its landings (footholds_runs.py)
+        self.footholds = StonesRuns(sc, self.plant) if sc.policy == "footholds" else None
         self.stiff = 1.0 + sc.mismatch_stiffness
         if sc.two_stage and not self.plant.has_halves:
             self.plant._half("touchdown")  # the error naming the plants that have halves
@@ -506,6 +528,8 @@ def _warm(ctl: _Controller, scalar: bool) -> None:
         ctl.deadbeat.warm(batch=not scalar)
     if ctl.bottom is not None:
         ctl.bottom.warm(batch=not scalar)
+    if ctl.footholds is not None:
+        ctl.footholds.warm()
 
 
 def run_batch(
@@ -534,6 +558,9 @@ def run_batch(
     _warm(ctl, scalar)
     ctl.plant.start(sc, G, seeds)
     extras = tuple(ctl.plant.columns)
+    if ctl.footholds is not None:
+        ctl.footholds.start(R)
+        extras += ctl.footholds.columns
     batch = RunBatch(
         sc,
         G,
@@ -656,6 +683,15 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
             plan = np.full(m, FEEDBACK)
         pred_h = pred_v = resid = elo = ehi = nan
         solve = np.zeros(m) if ctl.fixed else np.full(m, (time.perf_counter() - t0) * 1e6 / m)
+    elif ctl.footholds is not None:
+        # the footholds policy: the first hop of each run's plan; its next apex is the step's target
+        planned = ctl.footholds.plan(n, idx, hm, v_model, ground_prev[idx])
+        th, kc, kd, plan = planned["touchdown_angle"], planned["k_c"], planned["k_d"], planned["status"]
+        H_step, V_step = planned["next_apex_height"], planned["next_apex_speed"]
+        pred_h, pred_v, resid, elo, ehi = H_step, V_step, nan, nan, nan
+        solve, gr_model = planned["solve_us"], planned["ground"]
+        gr_true = ctl.footholds.ground(idx, h[idx], v[idx], th, ground_prev[idx], gr_model)
+        ctl.footholds.record(idx, n, planned, values)
     else:
         start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], default_angle(p, v_model))
         if sc.known >= 1:
@@ -753,8 +789,12 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
     else:
         steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f, ctl.rate, **leg)
         kd_b = None
+    if ctl.footholds is not None:  # a foot outside every stone is a miss; the ground the foot met
+        steps = ctl.footholds.land(idx, steps, values, n)
+        values["ground"][idx, n] = ground_prev[idx] + steps.ground
     met = steps.ground
-    values["ground"][idx, n] = np.where(met == gr_true, G[idx, n], ground_prev[idx] + met)
+    if ctl.footholds is None:
+        values["ground"][idx, n] = np.where(met == gr_true, G[idx, n], ground_prev[idx] + met)
     if tables is not None:
         # the time-based policy: the controls its tables gave where the leg met the ground, the
         # plan's status there, and the model's prediction at those controls from the measured apex

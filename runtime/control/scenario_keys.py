@@ -79,7 +79,7 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         None,
     ),
     ("targets", "speed"): (_NUM_PROFILE, "start speed", "m/s", "next apex speed, signed; as `height`", None),
-    ("terrain", "kind"): ("flat, steps, stairs, random", '"flat"', "", "the terrain's shape", None),
+    ("terrain", "kind"): ("flat, steps, stairs, random, stones", '"flat"', "", "the terrain's shape", None),
     ("terrain", "heights"): (
         _NUM_PROFILE,
         "",
@@ -87,7 +87,13 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "kind steps: the ground of each touchdown (absolute)",
         None,
     ),
-    ("terrain", "rise"): ("number", "0.1", "m", "kind stairs: height of a stair", None),
+    ("terrain", "rise"): (
+        "number",
+        "0.1 (stones: 0.0)",
+        "m",
+        "kind stairs: height of a stair; kind stones (drawn): each stone's height change, uniform in +-rise",
+        None,
+    ),
     ("terrain", "before"): ("integer", "2", "", "kind stairs: flat steps before the stairs", None),
     ("terrain", "up"): ("integer", "4", "", "kind stairs: stairs up", None),
     ("terrain", "flat"): ("integer", "2", "", "kind stairs: flat steps on top", None),
@@ -99,13 +105,52 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "kind random: each step's ground change, uniform in +-amplitude",
         None,
     ),
-    ("terrain", "seed"): ("integer", "0", "", "kind random: the ground's seed", None),
+    ("terrain", "seed"): ("integer", "0", "", "kind random, stones (drawn): the ground's seed", None),
     ("terrain", "known"): (
         "integer >= 0",
         "3",
         "steps",
         "touchdown grounds the controller knows ahead (0: unknown, it assumes flat ground)",
         "known",
+    ),
+    ("terrain", "stones"): (
+        "list of [x_a, x_b, height]",
+        "drawn",
+        "m",
+        "kind stones: the stones, each an interval [x_a, x_b] of x at a height (absolute: the start "
+        "apex at x = 0 over the ground 0), in order along x, not overlapping (docs/footholds.md); "
+        "without it the course is drawn from `count`, `width`, `gap`, `rise`, `seed`",
+        None,
+    ),
+    ("terrain", "count"): ("integer >= 1", "60", "", "kind stones (drawn): the stones", None),
+    ("terrain", "width"): (
+        "pair [low, high]",
+        "[0.3, 0.6]",
+        "m",
+        "kind stones (drawn): each stone's width, uniform in [low, high]",
+        None,
+    ),
+    ("terrain", "gap"): (
+        "pair [low, high]",
+        "[0.2, 0.8]",
+        "m",
+        "kind stones (drawn): each gap between stones, uniform in [low, high]",
+        None,
+    ),
+    ("terrain", "margin"): (
+        "number >= 0",
+        "0.0",
+        "m",
+        "kind stones: a foot lands at least this far inside a stone's ends, else it misses (the run "
+        "falls there: MISSED)",
+        None,
+    ),
+    ("terrain", "lookahead"): (
+        "integer >= 1",
+        "10",
+        "stones",
+        "kind stones: the stones the controller sees ahead",
+        "lookahead",
     ),
     ("control", "controls"): (
         "list of names",
@@ -160,12 +205,13 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
     ),
     ("control", "tol"): ("number > 0", "1e-9", "scaled", "the deadbeat solve's tolerance", "tol"),
     ("control", "policy"): (
-        "apex, retraction, time-based, raibert",
+        "apex, retraction, time-based, raibert, footholds",
         '"apex"',
         "",
         "the swing leg: the angle set at the apex and held; set at the apex and retracting at "
         "`retraction_rate`; or a time-based policy over `grounds` (the controls as functions of the "
-        "time since the apex); or Raibert's controller (foot placement and thrust, no map)",
+        "time since the apex); or Raibert's controller (foot placement and thrust, no map); or "
+        "footholds, the stones course's planner (`horizon` hops ahead, docs/footholds.md)",
         "policy",
     ),
     ("control", "retraction_rate"): (
@@ -218,6 +264,14 @@ KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
         "fraction",
         "the model's loss: the fraction of the apex speed lost per step (`slipmaps.identify` fits it)",
         "model_loss",
+    ),
+    ("control", "horizon"): (
+        "integer >= 0",
+        "2",
+        "hops",
+        "policy footholds: the hops planned ahead at each apex (0: the deadbeat step aimed at the centre "
+        "of the stone nearest the neutral foothold, the baseline)",
+        "horizon",
     ),
     ("mismatch", "mass"): (
         "number > -1",

@@ -63,9 +63,11 @@ from ..api.numeric import is_real, num
 from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipParams
 from ..api.validate import limit, limit_text
 from .deadbeat import CONTROLS, control_bounds
+from .footholds import LOOKAHEAD
 from .plant import ROBOT
 from .raibert import RaibertGains
 from .scenario_keys import KEY_DOCS
+from .stones import Course, CourseError, random_course
 
 __all__ = ["Scenario", "ScenarioError", "from_dict", "load", "load_scenario", "read_toml", "resized", "KEYS"]
 
@@ -89,7 +91,24 @@ KEYS = {
     ),
     "start": ("height", "speed"),
     "targets": ("height", "speed"),
-    "terrain": ("kind", "heights", "rise", "before", "up", "flat", "down", "amplitude", "seed", "known"),
+    "terrain": (
+        "kind",
+        "heights",
+        "rise",
+        "before",
+        "up",
+        "flat",
+        "down",
+        "amplitude",
+        "seed",
+        "known",
+        "stones",
+        "count",
+        "width",
+        "gap",
+        "margin",
+        "lookahead",
+    ),
     "control": (
         "controls",
         "bounds",
@@ -108,14 +127,15 @@ KEYS = {
         "correction",
         "correction_gate",
         "model_loss",
+        "horizon",
     ),
     "mismatch": ("mass", "stiffness"),
     "noise": ("height", "speed", "seed"),
     "params": (*FIELDS, "k"),
 }
-TERRAINS = ("flat", "steps", "stairs", "random")
+TERRAINS = ("flat", "steps", "stairs", "random", "stones")
 #: The swing-leg policies (module docstring).
-POLICIES = ("apex", "retraction", "time-based", "raibert")
+POLICIES = ("apex", "retraction", "time-based", "raibert", "footholds")
 
 
 @dataclass(frozen=True)
@@ -158,6 +178,9 @@ class Scenario:
     correction: int = 0  # the last hops whose prediction residuals shift the target (0: none)
     correction_gate: float = 0.01  # m: a hop whose ground changed by more is not averaged
     model_loss: float = 0.0  # the model's loss: the fraction of the apex speed lost per step
+    stones: Course | None = None  # kind stones: the course (stones.py); policy footholds on it
+    lookahead: int = LOOKAHEAD  # kind stones: the stones the controller sees ahead
+    horizon: int = 2  # policy footholds: the hops planned ahead (0: the deadbeat aimed at a stone's centre)
     mismatch_mass: float = 0.0  # the plant's mass is (1 + this) times the controller's
     mismatch_stiffness: float = 0.0  # the plant's springs are (1 + this) times what is commanded
     noise_height: float = 0.0  # standard deviation of the apex height measurement [m]
@@ -193,6 +216,7 @@ class Scenario:
         out["ground"] = list(self.ground)
         out["controls"] = None if self.controls is None else list(self.controls)
         out["grounds"] = None if self.grounds is None else list(self.grounds)
+        out["stones"] = None if self.stones is None else self.stones.as_dict()
         return out
 
 
@@ -356,6 +380,16 @@ def _grounds(x, sc=None):
     return (float(low), float(high))
 
 
+def _stones(x, sc=None):
+    """A course (:class:`~.stones.Course`, or a list of [x_a, x_b, height]), or None."""
+    if x is None or isinstance(x, Course):
+        return x
+    try:
+        return Course.of(x)
+    except CourseError as exc:
+        raise _Refused(str(exc), "colon") from None
+
+
 def _profile(x, sc):
     """Per-step values: as many as steps (none: the default), each a finite number."""
     try:
@@ -407,6 +441,9 @@ _CHECKS = {
     "correction": _whole(0),
     "correction_gate": _number(0.0, strict=True, words=_POSITIVE),
     "model_loss": _number(0.0, words="must be a fraction in [0, 1)"),
+    "stones": _stones,
+    "lookahead": _whole(1),
+    "horizon": _whole(0),
     "mismatch_mass": _number(-1.0, strict=True, words=_FRACTION.format("mass")),
     "mismatch_stiffness": _number(-1.0, strict=True, words=_FRACTION.format("stiffness")),
     "noise_height": _number(0.0, words="must not be negative"),
@@ -455,8 +492,16 @@ def _validate(sc: Scenario) -> None:
             "retraction_rate",
             f"must lie in {limit_text('retraction_rate', sc.params)}, got {num(rate)}",
         )
-    if sc.policy in ("time-based", "raibert") and sc.fixed_angle is not None:
+    if sc.policy in ("time-based", "raibert", "footholds") and sc.fixed_angle is not None:
         raise ScenarioError(name, "policy", f"{sc.policy!r} is a controller: it cannot go with fixed_angle")
+    if sc.policy == "footholds" and sc.stones is None:
+        raise ScenarioError(name, "policy", "'footholds' aims at stepping stones: it needs a stones course "
+                            '([terrain] kind = "stones")')  # fmt: skip
+    if sc.stones is not None and sc.policy != "footholds":
+        raise ScenarioError(
+            name, "stones", f'a stones course needs policy "footholds" (the controller that aims at stones), '
+            f"got policy {sc.policy!r}"
+        )  # fmt: skip
 
 
 class _Keys:
@@ -557,11 +602,12 @@ def _terrain(keys: _Keys, steps: int) -> tuple[tuple[float, ...], int]:
         "steps": {"kind", "known", "heights"},
         "stairs": {"kind", "known", "rise", "before", "up", "flat", "down"},
         "random": {"kind", "known", "amplitude", "seed"},
+        "stones": {"kind", "known", "stones", "count", "width", "gap", "rise", "seed", "margin", "lookahead"},
     }[kind]
     extra = sorted(set(keys.data) - allowed)
     if extra:
         keys.fail(extra[0], f"is not a key of kind {kind!r} (its keys: {', '.join(sorted(allowed))})")
-    if kind == "flat":
+    if kind in ("flat", "stones"):  # a stones course's grounds are the stones' (footholds_runs.py)
         return (0.0,) * steps, known
     if kind == "steps":
         if "heights" not in keys.data:
@@ -594,7 +640,45 @@ _KEY_OF = {doc[4]: key for key, doc in KEY_DOCS.items() if doc[4] is not None} |
     "ground": ("terrain", "heights"),
     "params": ("", "params"),
     "raibert": ("control", "raibert"),
+    "stones": ("terrain", "stones"),
 }
+
+
+def _course_of(keys: _Keys) -> dict:
+    """``[terrain]`` of kind stones: the course, listed (``stones``) or drawn (``count``, ``width``,
+    ``gap``, ``rise``, ``seed``), its ``margin``, and ``lookahead``; {} for another kind."""
+    if keys.data.get("kind") != "stones":
+        return {}
+    margin = keys.number("margin", 0.0, non_negative=True)
+    listed = "stones" in keys.data
+    drawn = sorted({"count", "width", "gap", "rise", "seed"} & set(keys.data))
+    if listed and drawn:
+        keys.fail(drawn[0], "is a key of a drawn course; this one lists its stones (stones = [...])")
+    where = f"{keys.where}: [{keys.name}] stones"
+    try:
+        if listed:
+            course = Course.of(keys.data["stones"], margin, where=where)
+        else:
+            pairs = {}
+            for key, default in (("width", (0.3, 0.6)), ("gap", (0.2, 0.8))):
+                pair = keys.data.get(key, list(default))
+                if not (isinstance(pair, list) and len(pair) == 2):
+                    keys.fail(key, f"must be a pair [low, high] [m], got {pair!r}")
+                pairs[key] = tuple(
+                    keys.number(f"{key}[{i}]", value=v, non_negative=True) for i, v in enumerate(pair)
+                )
+            course = random_course(
+                keys.integer("seed", 0),
+                count=keys.integer("count", 60, minimum=1),
+                width=pairs["width"],
+                gap=pairs["gap"],
+                rise=keys.number("rise", 0.0, non_negative=True),
+                margin=margin,
+            )
+    except CourseError as exc:
+        text = str(exc)
+        raise ValueError(text if text.startswith(where) else f"{where}: {text}") from None
+    return {"stones": course, "lookahead": keys.integer("lookahead", LOOKAHEAD, minimum=1)}
 
 
 def _plant_of(top: _Keys) -> tuple[str, dict]:
@@ -676,6 +760,7 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
         "raibert": _raibert_of(tables["control"]),
     }
     given["plant"], given["plant_options"] = _plant_of(top)
+    given |= _course_of(tables["terrain"])
     try:
         return Scenario(**given)
     except ScenarioError as exc:
