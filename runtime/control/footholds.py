@@ -42,11 +42,12 @@ from __future__ import annotations
 import enum
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from ..api.calls import KERNELS, Call
+from ..api.index import model_kernels
 from ..api.numeric import num
 from ..api.params import SlipParams
 from ..api.validate import check_params, real
@@ -95,7 +96,8 @@ class FootholdPlan:
     ``touchdown_angles``, ``k_c``, ``k_d``; ``touchdown_angle`` and ``foot`` the first hop's;
     ``cost`` the least squares' sum of squares; ``candidates`` the sequences within reach,
     ``feasible`` those feasible; ``iterations`` of the chosen one's solve, ``evaluations`` of the
-    map (with its Jacobian) over every sequence; ``solve_us`` the plan's time [us]; ``horizon``."""
+    map (with its Jacobian) over every sequence; ``solve_us`` the plan's time [us]; ``horizon`` the
+    hops planned (0: the baseline)."""
 
     status: FootholdStatus
     stones: tuple[int, ...]
@@ -213,7 +215,8 @@ class Footholds:
         apex, jac = call.spec("apex_return"), call.spec("apex_return_jacobian")
         self._jac = jac
         self._record = call.record(apex)
-        self._rows = fs.bind(apex.functions()[0], jac.functions()[0])
+        descent = model_kernels()["apex_to_touchdown"]  # the flight: the clearance over the stones
+        self._rows = fs.bind(apex.functions()[0], jac.functions()[0], descent.functions()[0])
         self._constant = "k" in jac.wrt
         self._ci, self._ctl_i, self._nominal_u = self._layout(apex, jac)
         order = ("b_y_apex", "b_xd_apex", "q_th_td", "ground", "retraction_rate")
@@ -236,7 +239,7 @@ class Footholds:
         }
         for key, value in fixed.items():
             self._cf[fs.CF.index(key)] = value
-        self._at_cf = [fs.CF.index(k) for k in ("x0", "g0", "reach", "step")]
+        self._at_cf = [fs.CF.index(k) for k in ("x0", "g0", "reach", "step", "margin")]
         lo = [self.bounds[c][0] for c in self.controls]
         hi = [self.bounds[c][1] for c in self.controls]
         change = [ANGLE_SCALE if c == "touchdown_angle" else p.k_c for c in self.controls]
@@ -280,6 +283,12 @@ class Footholds:
             "ce": next((self.controls.index(c) for c in ("k_d", "k_c") if c in self.controls), -1),
             "o_ta": outs.index("t_ascent"),
         }
+        descent = model_kernels()["apex_to_touchdown"]
+        ci |= {"d_nx": len(descent.x), "d_foot": descent.outputs.index("foot_x"), "d_width": descent.width}
+        for key, arg in (("d_h", "b_y_apex"), ("d_v", "b_xd_apex"), ("d_th", "q_th_td"), ("d_qr", "q_r_td")):
+            ci[key] = descent.x.index(arg)
+        for key, arg in (("d_gf", "g_f"), ("d_g", "ground"), ("d_rate", "retraction_rate")):
+            ci[key] = descent.x.index(arg)
         places, nominal = [], []
         for c in self.controls:
             arg = "q_th_td" if c == "touchdown_angle" else c
@@ -314,17 +323,37 @@ class Footholds:
         target_height=None,
         target_speed=None,
         warm: FootholdPlan | None = None,
+        hops: int | None = None,
     ) -> FootholdPlan:
         """The plan from the apex (``apex_height`` above ``ground``, the absolute height of the
         ground under it; ``apex_speed``; its ``x``) over ``course`` (module docstring); the
         nominal targets of the hops ``target_height``, ``target_speed`` (a number or one per hop;
-        default the apex's own); ``warm``: the previous apex's plan."""
+        default the apex's own); ``warm``: the previous apex's plan; ``hops``: the hops left to
+        hop (a run's last steps plan no further: the horizon shrinks to them). Where no sequence
+        of the horizon's length is feasible (none within reach where the course ends; none whose
+        hops the map completes or whose feet stay inside), the horizon shrinks by one hop at a time
+        to the first that has one; without any, the plan of the full horizon where a sequence ran
+        (NO_FOOTHOLD), else the longest that ran."""
         t0 = time.perf_counter()
-        H = max(self.horizon, 1)
+        H = max(self.horizon, 1) if hops is None else max(min(self.horizon, int(hops)), 1)
         Ht = _per_hop(apex_height if target_height is None else target_height, H, "target_height")
         Vt = _per_hop(apex_speed if target_speed is None else target_speed, H, "target_speed")
         if self.horizon == 0:
             return self._centre(apex_height, apex_speed, course, x, ground, Ht, Vt, t0)
+        fallback = None
+        for hops_now in range(H, 0, -1):
+            plan = self._solve(
+                apex_height, apex_speed, course, x, ground, Ht[:hops_now], Vt[:hops_now], warm, t0
+            )
+            if plan.ok:
+                return plan
+            if fallback is None or (fallback.status != FootholdStatus.NO_FOOTHOLD and plan.stones[0] >= 0):
+                fallback = plan
+        return replace(fallback, solve_us=(time.perf_counter() - t0) * 1e6)
+
+    def _solve(self, apex_height, apex_speed, course, x, ground, Ht, Vt, warm, t0) -> FootholdPlan:
+        """The plan over ``len(Ht)`` hops (:meth:`plan`)."""
+        H = Ht.size
         nc = len(self.controls)
         visible = course.ahead(x, self.lookahead)
         first = int(visible[0]) if visible.size else len(course)
@@ -334,12 +363,12 @@ class Footholds:
         span = np.full(3 + H - 1, -1, dtype=np.int64)
         span[:3] = first, first + visible.size, self._jac.width
         warm_u = np.zeros(max((H - 1) * nc, 1))
-        if warm is not None and warm.horizon == self.horizon and H > 1 and warm.stones[0] >= 0:
-            span[3:] = warm.stones[1:]
-            warm_u[:] = warm.controls[nc:]
+        if warm is not None and H > 1 and len(warm.stones) >= H and warm.stones[0] >= 0:
+            span[3:] = warm.stones[1:H]  # its hops after the first start the sequences that continue it
+            warm_u[:] = warm.controls[nc : nc * H]
         x0 = np.array([apex_height, apex_speed, 0.0, 0.0, 0.0])[self._order]
         cf = self._cf.copy()
-        cf[self._at_cf] = x, ground, self.reach * step, step
+        cf[self._at_cf] = x, ground, self.reach * step, step, course.margin
         nominal = np.ascontiguousarray(np.stack([Ht, Vt], axis=1))
         U_nom = np.tile(self._nominal_u, (H, 1))
         angle = self.controls.index("touchdown_angle")
@@ -395,7 +424,7 @@ class Footholds:
             iterations=int(row[head["iterations"]]),
             evaluations=int(np.nansum(OUT[:count, head["evaluations"]])),
             solve_us=(time.perf_counter() - t0) * 1e6,
-            horizon=self.horizon,
+            horizon=H,
             controls=tuple(u.reshape(-1).tolist()),
         )
 
@@ -431,7 +460,7 @@ class Footholds:
             iterations=0,
             evaluations=0,
             solve_us=(time.perf_counter() - t0) * 1e6,
-            horizon=self.horizon,
+            horizon=0 if self.horizon == 0 else H,
         )
 
     # ------------------------------------------------------------------------------------------

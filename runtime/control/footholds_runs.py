@@ -135,6 +135,7 @@ class StonesRuns:
                 target_height=Ht,
                 target_speed=Vt,
                 warm=self.plans[r],
+                hops=sc.steps - n,
             )
             self.plans[r] = plan
             out["touchdown_angle"][j] = plan.touchdown_angle

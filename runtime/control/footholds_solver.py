@@ -10,14 +10,15 @@ reads it). One call plans an apex (:func:`plan_rows`):
    convergence (or ``max_iter``) those whose cost is within :data:`SCREEN_GAP` of the best (a
    sequence whose feet stay several stones off is dropped early);
 3. the choice: the sequence of least cost among the feasible ones (every hop's map OK, every foot
-   inside its stone's usable part, every next apex moving in the target's direction), else the
+   inside its stone's usable part, every hop clear of the stones it passes, every next apex moving
+   in the target's direction and rising from its liftoff for at least half of ``t_min``), else the
    least-cost one that ran (``RES``: :data:`RESULTS`).
 
 The problem of a sequence. The unknowns are the controls u of every hop (the touchdown angle, and
 k_d or k_c or k: ``nc`` a hop, H nc in all); the hops are chained, the next apex of hop i (its
 height above stone k_i, its speed, its x: the apex's x plus the step length) the apex of hop i + 1,
-each on the ground of its stone relative to the last one. The residuals, four a hop and one a
-control:
+each on the ground of its stone relative to the last one. The residuals, :data:`PER_HOP` a hop and
+one a control:
 
 * the foot: w_foot (x_foot - c_k) / half_k, the foot's x (the apex's x plus the map's ``foot_x``)
   against the centre c_k of the stone's usable part in units of its half-width: 0 at the centre, 1 at
@@ -25,8 +26,13 @@ control:
   allows);
 * the next apex: w_height (h - H_i) / l0 and w_speed (v - V_i) / sqrt(g_f l0), against the nominal
   target of that step (the deadbeat's scaling);
-* the floor: w_floor max(0, floor + rise - h) / l0, the apex at least ``floor`` above the next stone
-  (``rise``: its height above this one; after the last hop, the stone after k_H);
+* viability, hinges that are 0 where they hold: the floor, w_floor max(0, floor + rise - h) / l0
+  (the apex at least ``floor`` above the next stone, ``rise`` its height above this one; after the
+  last hop, the stone after k_H); the rise after liftoff, w_floor max(0, t_min - t_ascent) / t_min
+  (a hop at the edge of LIFTOFF_DOWNWARD on the model may fail on the plant); the clearance,
+  w_floor max(0, s + c) / c with c = :data:`CLEARANCE` l0 and s the most by which the falling foot
+  is short of the end of a higher stone it passes when it comes down to that stone's height (the
+  model's exact flight, ``apex_to_touchdown``; its derivatives by forward differences);
 * the least change: w_reg (u - u_nom) / s, each control against its nominal value (the neutral angle,
   the nominal stiffness) in the deadbeat's scaled norm (s: :data:`~.deadbeat.ANGLE_SCALE` for the
   angle, the nominal k_c for a stiffness), so that controls to spare (k_c and k_d both) take the
@@ -34,9 +40,10 @@ control:
 
 The Jacobian is exact: each hop's generated derivatives (d/d apex height, d/d apex speed, d/d each
 control) chained forward through the apex states (forward mode over the hops). The start
-(:func:`_aim`): each hop's angle puts its foot on the stone's centre and its stiffness gives the next
-apex the target's energy (Newton's method on the map's outputs), hop after hop; the hops the last
-plan continues start from its controls instead (model-predictive warm start). The method:
+(:func:`_aim`): each hop's angle puts its foot into its stone (the point of the usable part's inner
+half nearest where the hop's starting angle puts it) and its stiffness gives the next apex the
+target's energy (Newton's method on the map's outputs), hop after hop; the hops the last plan
+continues start from its controls instead (model-predictive warm start). The method:
 Levenberg-Marquardt in the scaled unknowns (u - u_nom) / s' (s': 1 rad, the nominal k_c), Nielsen's
 damping update, every trial point projected into the controls' bounds with an active set (a control
 at a bound whose descent leaves the box is held there for the step), a trial where a hop's map fails
@@ -46,11 +53,13 @@ than 1e-7 or the cost by less than ``tol`` of itself.
 Why not the deadbeat's solver (:mod:`.compiled`): that solves one step, at most three controls and
 the two components of one next apex, in work arrays of that size, with one-control fallbacks (a
 scan, Illinois) that a chain of hops has no use for; the footholds problem has up to nine unknowns
-and 4 H + 9 residuals through H chained map calls, and a replan solves several. SciPy's
-``least_squares`` would serve for one sequence, but costs about a millisecond of Python per solve
-(its setup and a Python callback per evaluation), more than a whole replan's budget; compiled, one
-call enumerates, solves and chooses. This is the one implementation: the planner, the runs'
-``footholds`` policy, the study and the benchmark all call it through :class:`.footholds.Footholds`.
+and 6 H + 9 residuals through H chained map calls, and a replan solves several. SciPy's
+``least_squares`` would serve for one sequence, but its Python costs more than a replan's budget:
+2.2 ms a solve with bounds (``trf``), 0.5 ms without (``lm``), on a problem of 4 unknowns and 21
+residuals that takes 5 evaluations (callbacks in numpy, nothing of a map; 2-core AMD EPYC under
+load); compiled, one call enumerates, solves and chooses. This is the one implementation: the
+planner, the runs' ``footholds`` policy, the study and the benchmark all call it through
+:class:`.footholds.Footholds`.
 """
 
 from __future__ import annotations
@@ -65,7 +74,8 @@ from .compiled import MODEL
 __all__ = ["CF", "CI", "HOP", "MAX_SEQUENCES", "OUT_HEAD", "RESULTS", "STONE", "bind", "out_width"]
 
 #: The integer settings ``ci`` by name (positions in the row ``x``, the outputs and the Jacobian's
-#: columns; the iterations; the control that changes the energy, -1 for none).
+#: columns; the iterations; the control that changes the energy, -1 for none; the descent kernel's
+#: row length, its inputs' positions, its foot's output and its width).
 CI = (
     "nc",
     "n_out",
@@ -83,6 +93,16 @@ CI = (
     "max_iter",
     "ce",
     "o_ta",
+    "d_nx",
+    "d_h",
+    "d_v",
+    "d_th",
+    "d_qr",
+    "d_gf",
+    "d_g",
+    "d_rate",
+    "d_foot",
+    "d_width",
 )
 #: The float settings ``cf`` by name: the apex's x and ground, the weights, the scales, the floor,
 #: the tolerance, gravity and the touchdown leg length, the enumeration's aim, reach and step.
@@ -104,13 +124,15 @@ CF = (
     "reach",
     "step",
     "t_min",
+    "margin",
+    "first",
 )
 #: A stone's row in the stones' table: its usable part's ends, centre and half-width, its height,
 #: and the height of the stone after it (the floor after a sequence's last hop).
 STONE = ("lo", "hi", "centre", "half", "height", "next_height")
 #: A sequence's row of OUT: this head, then per hop :data:`HOP`, then the controls (H nc).
 OUT_HEAD = ("status", "cost", "iterations", "evaluations", "converged", "feasible")
-HOP = ("foot", "margin", "apex_height", "apex_speed", "apex_x", "t_ascent")
+HOP = ("foot", "margin", "apex_height", "apex_speed", "apex_x", "t_ascent", "shortfall")
 #: ``RES`` of a plan: the sequences found, the chosen one's row, and the outcome: 0 a feasible
 #: sequence, 1 none feasible (the least-cost one that ran), 2 the map failed on every one, 3 no
 #: sequence within reach.
@@ -118,17 +140,23 @@ RESULTS = ("count", "best", "outcome")
 #: Sequences a plan solves at most (the nearest first).
 MAX_SEQUENCES = 96
 
-(_NC, _NOUT, _NWRT, _OH, _OV, _OL, _OF, _XH, _XV, _XTH, _XG, _WH, _WV, _MAXIT, _CE, _OTA) = range(len(CI))
+(_NC, _NOUT, _NWRT, _OH, _OV, _OL, _OF, _XH, _XV, _XTH, _XG, _WH, _WV, _MAXIT, _CE, _OTA) = range(16)
+_DNX, _DH, _DV, _DTH, _DQR, _DGF, _DG, _DRATE, _DFOOT, _DWIDTH = range(16, len(CI))
 _X0, _G0, _WFOOT, _WHEIGHT, _WSPEED, _WFLOOR, _WREG, _L0, _VS, _FLOOR, _TOL, _GF, _QR = range(13)
-_AIMX, _REACH, _STEP, _TMIN = range(13, len(CF))
+_AIMX, _REACH, _STEP, _TMIN, _MARGINX, _FIRST = range(13, len(CF))
 _LO, _HI, _CENTRE, _HALF, _HEIGHT, _NEXT = range(len(STONE))
 _STATUS, _COST, _ITER, _EVAL, _CONV, _FEAS = range(len(OUT_HEAD))
-_FOOT, _MARGIN, _APH, _APV, _APX, _TA = range(len(HOP))
+_FOOT, _MARGIN, _APH, _APV, _APX, _TA, _CLEAR = range(len(HOP))
 _NH = len(OUT_HEAD)
 _NHOP = len(HOP)
 _OK = 0
 #: Residuals a hop has before the least-change ones.
-PER_HOP = 5
+PER_HOP = 6
+#: The step [rad, m, m/s] of the descent's forward differences (the clearance's derivatives).
+FD_STEP = 1e-7
+#: The clearance [l0] the least squares keeps between the foot and a higher stone's end it passes
+#: (its residual grows from there, per this much shortfall).
+CLEARANCE = 0.03
 #: Newton steps at most of a starting angle (:func:`_aim`).
 AIM_STEPS = 4
 #: A starting angle at least this far [rad] beyond the least at which the leg reaches the ground.
@@ -152,7 +180,8 @@ def out_width(hops: int, nc: int) -> int:
 # 5 x nc), the settings (:data:`CF`). The work arrays ``w`` (:func:`_work`): the row x, the record p,
 # a kernel's row d, the chain's derivatives D and E, the residuals and their Jacobian (r, J; rt,
 # Jt at a trial), the normal matrix A, the gradient g, the step delta, the trial controls ut, the
-# hops' values (hops; hopt at a trial), the free controls, and a copy of the controls (keep).
+# hops' values (hops; hopt at a trial), the free controls, a copy of the controls (keep), the
+# clearance's derivatives (C), and the descent kernel's row and outputs (dx, dout).
 # ----------------------------------------------------------------------------------------------
 @njit(error_model="numpy")
 def _put(x, p, ctl_i, c, value):
@@ -193,12 +222,69 @@ def _d(d, ci, o, w):
 
 
 @njit(error_model="numpy")
-def _chain(apex, jac, want, u, seq, prob, w, r, J, hops):
+def _foot_at(descent, dx, dout, ci, cf, ground, X):
+    """The foot's x [m] when it falls to ``ground`` (relative to the apex's) from the apex in ``dx``
+    (the model's exact flight), or where it is below that already at the apex, its x there; and
+    whether the flight ran."""
+    dx[ci[_DG]] = ground
+    if descent(dx, dx, dout) == _OK:
+        return X + dout[ci[_DFOOT]], True
+    return X + cf[_QR] * math.sin(dx[ci[_DTH]]), False
+
+
+@njit(error_model="numpy")
+def _clearance(descent, i, seq, u, h, v, X, gprev, start, prob, w, want):
+    """Hop ``i``'s clearance shortfall [m]: over the stones from ``start`` to its own that stand
+    higher than its own, the most by which the falling foot is short of a stone's end (its usable
+    end plus the margin) when it comes down to that stone's height (the model's exact flight
+    ``apex_to_touchdown``; where the foot is below that height at the apex already, its x there);
+    at most 0 when the hop clears them. With ``want``, the derivatives of that foot's x by the
+    apex height, speed and the angle (forward differences of the flight) into ``w[17]``, and the
+    angle's control there too."""
+    stones, ci, ctl_i, cf = prob[0], prob[4], prob[5], prob[7]
+    dx, dout, C = w[18], w[19], w[17]
+    nc = ci[_NC]
+    k = seq[i]
+    ca = 0
+    for c in range(nc):
+        if ctl_i[0, c] == 0 and ctl_i[1, c] == ci[_XTH]:
+            ca = c
+    th = u[i * nc + ca]
+    dx[:] = 0.0
+    dx[ci[_DQR]], dx[ci[_DGF]] = cf[_QR], cf[_GF]
+    worst = -math.inf
+    for j in range(start, k):
+        end = stones[j, _HI] + cf[_MARGINX]  # the stone's end: its usable part's, and the margin
+        if stones[j, _HEIGHT] <= stones[k, _HEIGHT] or end <= X:
+            continue
+        dx[ci[_DH]], dx[ci[_DV]], dx[ci[_DTH]] = h, v, th
+        ground = stones[j, _HEIGHT] - gprev
+        foot, flew = _foot_at(descent, dx, dout, ci, cf, ground, X)
+        if end - foot <= worst:
+            continue
+        worst = end - foot
+        if want:
+            C[3] = ca
+            if not flew:
+                C[0], C[1], C[2] = 0.0, 0.0, cf[_QR] * math.cos(th)
+                continue
+            for e in range(3):
+                at = ci[_DH] if e == 0 else (ci[_DV] if e == 1 else ci[_DTH])
+                dx[at] += FD_STEP
+                moved, ok = _foot_at(descent, dx, dout, ci, cf, ground, X)
+                dx[at] -= FD_STEP
+                C[e] = (moved - foot) / FD_STEP if ok else 0.0
+    return worst if worst > -math.inf else -1.0
+
+
+@njit(error_model="numpy")
+def _chain(kernels, want, u, seq, prob, w, r, J, hops):
     """The hops of ``seq`` at the controls ``u``: the residuals ``r`` (module docstring), with
-    ``want`` their Jacobian ``J`` (m x n) by u, and each hop's foot, next apex and ascent time in
-    ``hops``; returns 0, or the status of the first hop whose map fails."""
+    ``want`` their Jacobian ``J`` (m x n) by u, and each hop's foot, next apex, ascent time and
+    clearance shortfall in ``hops``; returns 0, or the status of the first hop whose map fails."""
+    apex, jac = kernels[0], kernels[1]
     stones, nominal, x0, _, ci, ctl_i, ctl_f, cf = prob
-    x, p, d, D, E = w[0], w[1], w[2], w[3], w[4]
+    x, p, d, D, E, C = w[0], w[1], w[2], w[3], w[4], w[17]
     H = seq.shape[0]
     nc = ci[_NC]
     n = H * nc
@@ -206,12 +292,15 @@ def _chain(apex, jac, want, u, seq, prob, w, r, J, hops):
     wh, wv = ci[_WH], ci[_WV]
     l0, vs, tmin = cf[_L0], cf[_VS], cf[_TMIN]
     h, v, X, gprev = x0[ci[_XH]], x0[ci[_XV]], cf[_X0], cf[_G0]
+    start = int(cf[_FIRST])
     if want:
         D[:, :] = 0.0
         J[:, :] = 0.0
     for i in range(H):
         k = seq[i]
         _hop_inputs(i, seq, u, h, v, gprev, prob, x, p)
+        shortfall = _clearance(kernels[2], i, seq, u, h, v, X, gprev, start, prob, w, want)
+        start = k
         code = jac(x, p, d) if want else apex(x, p, d)
         if code != _OK:
             return code
@@ -226,7 +315,10 @@ def _chain(apex, jac, want, u, seq, prob, w, r, J, hops):
         r[q + 2] = cf[_WSPEED] * (vn - nominal[i, 1]) / vs
         r[q + 3] = cf[_WFLOOR] * short / l0 if short > 0.0 else 0.0
         r[q + 4] = cf[_WFLOOR] * lift / tmin if lift > 0.0 else 0.0
+        short_by = shortfall + CLEARANCE * l0  # the clearance kept, or the shortfall
+        r[q + 5] = cf[_WFLOOR] * short_by / (CLEARANCE * l0) if short_by > 0.0 else 0.0
         hops[i, 0], hops[i, 1], hops[i, 2], hops[i, 3], hops[i, 4] = foot, hn, vn, X + length, ascent
+        hops[i, 5] = shortfall
         if want:
             # d(output)/d(u): d/d(apex height) D_h + d/d(apex speed) D_v (+ D_x for the foot and
             # the next apex's x), plus this hop's own controls' columns
@@ -243,6 +335,11 @@ def _chain(apex, jac, want, u, seq, prob, w, r, J, hops):
                 J[q + 2, b] = cf[_WSPEED] * E[2, b] / vs
                 J[q + 3, b] = -cf[_WFLOOR] * E[1, b] / l0 if short > 0.0 else 0.0
                 J[q + 4, b] = -cf[_WFLOOR] * E[4, b] / tmin if lift > 0.0 else 0.0
+                if short_by > 0.0:  # the foot's x at the stone's height: C (d/dh, d/dv, d/d angle)
+                    dfoot = C[0] * D[0, b] + C[1] * D[1, b] + D[2, b] + (C[2] if b == i * nc + C[3] else 0.0)
+                    J[q + 5, b] = -cf[_WFLOOR] * dfoot / (CLEARANCE * l0)
+                else:
+                    J[q + 5, b] = 0.0
                 D[0, b], D[1, b], D[2, b] = E[1, b], E[2, b], E[3, b]
         h, v, X, gprev = hn, vn, X + length, stones[k, _HEIGHT]
     m0 = PER_HOP * H
@@ -303,7 +400,7 @@ def _least_angle(x, ci, cf, th):
 
 
 @njit(error_model="numpy")
-def _aim(apex, jac, seq, u, cold, upto, prob, w):
+def _aim(kernels, seq, u, cold, upto, prob, w):
     """The starting controls: the hops ``cold`` to ``upto`` - 1 get the angle that puts the foot in
     its stone, at the point of the usable part's inner half nearest where the hop's starting angle
     puts it (the least change of the gait), and, with a stiffness that changes the energy
@@ -312,6 +409,7 @@ def _aim(apex, jac, seq, u, cold, upto, prob, w):
     :data:`AIM_STEPS` steps, within the bounds; the foot does not depend on the stiffness, so the
     two steps decouple); the other hops keep theirs. Returns the number of map evaluations
     (negative: the map failed at the start, the status's negative)."""
+    apex, jac = kernels[0], kernels[1]
     stones, nominal, x0, _, ci, ctl_i, ctl_f, cf = prob
     x, p, d = w[0], w[1], w[2]
     H = seq.shape[0]
@@ -385,7 +483,7 @@ def _aim(apex, jac, seq, u, cold, upto, prob, w):
 
 
 @njit(error_model="numpy")
-def _start(apex, jac, seq, u, cold, prob, w):
+def _start(kernels, seq, u, cold, prob, w):
     """The starting controls of a sequence (module docstring): ``u`` (the given ones) aimed from hop
     ``cold`` on; else aimed on that hop alone (a hop that cannot reach its stone from where the aimed
     ones leave it); then the same from the nominal controls (a warm start that no longer fits).
@@ -406,7 +504,7 @@ def _start(apex, jac, seq, u, cold, prob, w):
             u[b] = keep[b] if attempt < 2 else ctl_f[2, b % nc]
         first = cold if attempt < 2 else 0
         upto = H if attempt % 2 == 0 else first + 1
-        got = _aim(apex, jac, seq, u, first, upto, prob, w)
+        got = _aim(kernels, seq, u, first, upto, prob, w)
         if got >= 0:
             return evaluations + got
         evaluations = got
@@ -422,7 +520,7 @@ def _cost(r):
 
 
 @njit(error_model="numpy")
-def _lm(apex, jac, seq, u, iters, prob, w, out):
+def _lm(kernels, seq, u, iters, prob, w, out):
     """Levenberg-Marquardt on one sequence from the controls ``u`` (updated), at most ``iters``
     steps (module docstring); its row ``out`` gets the status, cost, counts and the hops."""
     stones, ci, ctl_f, cf = prob[0], prob[4], prob[6], prob[7]
@@ -433,7 +531,7 @@ def _lm(apex, jac, seq, u, iters, prob, w, out):
     m = r.shape[0]
     lo, hi, scale = ctl_f[0], ctl_f[1], ctl_f[4]
     out[_EVAL] += 1.0
-    code = _chain(apex, jac, True, u, seq, prob, w, r, J, hops)
+    code = _chain(kernels, True, u, seq, prob, w, r, J, hops)
     out[_STATUS] = float(code)
     if code != _OK:
         return
@@ -485,7 +583,7 @@ def _lm(apex, jac, seq, u, iters, prob, w, out):
         cost_t = math.inf
         if ok:
             out[_EVAL] += 1.0
-            if _chain(apex, jac, True, ut, seq, prob, w, rt, Jt, hopt) == _OK:
+            if _chain(kernels, True, ut, seq, prob, w, rt, Jt, hopt) == _OK:
                 cost_t = _cost(rt)
         if cost_t < cost:
             # the decrease the linear model promised, for Nielsen's update of mu:
@@ -526,6 +624,7 @@ def _lm(apex, jac, seq, u, iters, prob, w, out):
         out[base + _APV] = hops[i, 2]
         out[base + _APX] = hops[i, 3]
         out[base + _TA] = hops[i, 4]
+        out[base + _CLEAR] = hops[i, 5]
     base = _NH + H * _NHOP
     for b in range(n):
         out[base + b] = u[b]
@@ -585,7 +684,7 @@ def _enumerate(stones, first, last, H, cf, SEQ):
 
 
 @njit(error_model="numpy")
-def _work(nx, np_, width, H, nc):
+def _work(nx, np_, width, H, nc, ci):
     """The work arrays of a plan (the comment above :func:`_put`)."""
     n = H * nc
     m = PER_HOP * H + n
@@ -603,10 +702,13 @@ def _work(nx, np_, width, H, nc):
         np.empty(n),
         np.empty(n),
         np.empty(n),
-        np.empty((H, 5)),
-        np.empty((H, 5)),
+        np.empty((H, 6)),
+        np.empty((H, 6)),
         np.empty(n, dtype=np.int64),
         np.empty(n),
+        np.zeros(4),
+        np.empty(ci[_DNX]),
+        np.empty(ci[_DWIDTH]),
     )
 
 
@@ -615,12 +717,14 @@ _I2, _F2 = types.int64[:, ::1], types.float64[:, ::1]
 
 
 @njit(
-    types.void(MODEL, MODEL, _F2, _I1, _F2, _F1, _F1, _F1, _I1, _I2, _F2, _F1, _F2, _I2, _F2, _I1),
+    types.void(MODEL, MODEL, MODEL, _F2, _I1, _F2, _F1, _F1, _F1, _I1, _I2, _F2, _F1, _F2, _I2, _F2, _I1),
     cache=True,
     error_model="numpy",
     nogil=True,
 )
-def plan_rows(apex, jac, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, cf, nominal, SEQ, OUT, RES):
+def plan_rows(
+    apex, jac, descent, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, cf, nominal, SEQ, OUT, RES
+):
     """One plan (module docstring) into ``SEQ`` (the candidate sequences), ``OUT`` (a row each) and
     ``RES`` (:data:`RESULTS`). ``span``: the stones seen (first, last), the Jacobian kernel's row
     length, then the previous plan's stones after its first hop (H - 1 of them; -1: no previous
@@ -630,7 +734,9 @@ def plan_rows(apex, jac, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, 
     nc = ci[_NC]
     n = H * nc
     prob = (stones, nominal, x0, p0, ci, ctl_i, ctl_f, cf)
-    w = _work(x0.shape[0], p0.shape[0], span[2], H, nc)
+    kernels = (apex, jac, descent)
+    cf[_FIRST] = float(span[0])
+    w = _work(x0.shape[0], p0.shape[0], span[2], H, nc, ci)
     cf[_AIMX] = _neutral_foot(apex, U_nom, prob, w)
     count = _enumerate(stones, span[0], span[1], H, cf, SEQ)
     RES[0], RES[1], RES[2] = count, -1, 3
@@ -653,12 +759,12 @@ def plan_rows(apex, jac, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, 
         for i in range(H):
             for c in range(nc):
                 u[i * nc + c] = warm_u[i * nc + c] if i < cold else U_nom[i, c]
-        got = _start(apex, jac, SEQ[s], u, cold, prob, w)
+        got = _start(kernels, SEQ[s], u, cold, prob, w)
         if got < 0:
             row[_STATUS] = float(-got)
             continue
         row[_EVAL] = float(got)
-        _lm(apex, jac, SEQ[s], u, SCREEN, prob, w, row)
+        _lm(kernels, SEQ[s], u, SCREEN, prob, w, row)
         U[s, :] = u
         if row[_STATUS] == _OK:
             best_cost = min(best_cost, row[_COST])
@@ -668,7 +774,7 @@ def plan_rows(apex, jac, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, 
         if row[_STATUS] != _OK or row[_CONV] != 0.0 or row[_COST] > best_cost + SCREEN_GAP:
             continue
         u[:] = U[s]
-        _lm(apex, jac, SEQ[s], u, ci[_MAXIT] - SCREEN, prob, w, row)
+        _lm(kernels, SEQ[s], u, ci[_MAXIT] - SCREEN, prob, w, row)
     # the choice: the least cost among the feasible sequences, else among those that ran
     best, best_ran = -1, -1
     for s in range(count):
@@ -679,7 +785,7 @@ def plan_rows(apex, jac, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, 
         for i in range(H):
             base = _NH + i * _NHOP
             viable = row[base + _APV] * nominal[i, 1] >= 0.0 and row[base + _TA] >= 0.5 * cf[_TMIN]
-            if not (row[base + _MARGIN] >= 0.0 and viable):
+            if not (row[base + _MARGIN] >= 0.0 and row[base + _CLEAR] <= 0.0 and viable):
                 feasible = False
         row[_FEAS] = 1.0 if feasible else 0.0
         if best_ran < 0 or row[_COST] < OUT[best_ran, _COST]:
@@ -697,10 +803,10 @@ def plan_rows(apex, jac, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, 
 _BOUND: dict = {}
 
 
-def bind(apex, jac):
+def bind(apex, jac, descent):
     """:func:`plan_rows` bound to one map's kernels (``apex``, ``jac``: its apex-return role
-    kernels), compiled once per map and process (numba types the kernels as constants), as
-    :func:`.compiled.bind` binds the deadbeat's."""
+    kernels; ``descent``: the model's ``apex_to_touchdown``), compiled once per map and process
+    (numba types the kernels as constants), as :func:`.compiled.bind` binds the deadbeat's."""
     hit = _BOUND.get((apex, jac))
     if hit is not None:
         return hit
@@ -708,7 +814,23 @@ def bind(apex, jac):
     @njit(error_model="numpy", nogil=True)
     def rows(stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, cf, nominal, SEQ, OUT, RES):
         plan_rows(
-            apex, jac, stones, span, U_nom, warm_u, x0, p0, ci, ctl_i, ctl_f, cf, nominal, SEQ, OUT, RES
+            apex,
+            jac,
+            descent,
+            stones,
+            span,
+            U_nom,
+            warm_u,
+            x0,
+            p0,
+            ci,
+            ctl_i,
+            ctl_f,
+            cf,
+            nominal,
+            SEQ,
+            OUT,
+            RES,
         )
 
     _BOUND[(apex, jac)] = rows
