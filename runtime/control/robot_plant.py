@@ -3,7 +3,8 @@ behind the plant interface the map plant implements (:mod:`.plant`).
 
 ``plant = "mujoco"`` in a scenario (``[plant] kind = "mujoco"``, ``slipmaps run --plant mujoco``):
 :meth:`RobotPlant.start` builds each run's terrain from its touchdown grounds (one level per
-segment: :mod:`slipmaps.runtime.robot.settings`) and its robot, to be placed at the scenario's
+segment: :mod:`slipmaps.runtime.robot.settings`; a stones course: its stones, :func:`stones_terrain`)
+and its robot, to be placed at the scenario's
 start apex with its leg at the first step's commanded angle; a step then hands each run's robot
 the controller's command and records what the robot did:
 
@@ -32,7 +33,7 @@ import numpy as np
 from ..robot.settings import robot_settings
 from .plant import Compressed, PlantSteps, blank_failed
 
-__all__ = ["COLUMNS", "RobotPlant"]
+__all__ = ["COLUMNS", "RobotPlant", "stones_terrain"]
 
 #: The robot's own per-step records (``slipmaps.runtime.robot.hopper.Hop``'s fields): the foot's
 #: skid [m], its bounces and scuffs, the energy at the apex and the step's losses [J], the peaks of
@@ -86,8 +87,9 @@ class RobotPlant:
         margin = 2.0 * grounds.shape[1] * spacing + 20.0
         self.spacing = spacing
         self.hoppers = []
+        stones = None if scenario.stones is None else stones_terrain(scenario.stones)
         for r in range(grounds.shape[0]):
-            terrain = Terrain(grounds[r], spacing, kind=s.terrain, ramp=ramp, margin=margin)
+            terrain = stones or Terrain(grounds[r], spacing, kind=s.terrain, ramp=ramp, margin=margin)
             params = self.params.with_(seed=int(self.params.seed) * 1_000_003 + int(seeds[r]))
             self.hoppers.append(self._hopper.Hopper(params, terrain, log_rate=s.log_rate or None))
         self._ground = np.zeros(len(self.hoppers))
@@ -240,6 +242,29 @@ class RobotPlant:
         ok = status == 0
         self._ground[rows[ok]] = np.array([h.ground for h in hops if h is not None and h.ok])
         return blank_failed(steps)
+
+
+#: The stones' terrain: levels per segment of this length [m] (the stones' ends to the millimetre),
+#: and the pits between stones this deep [m] below the lowest stone.
+STONE_SPACING = 0.001
+STONE_PIT = 0.5
+
+
+def stones_terrain(course):
+    """A stones course (:class:`~.stones.Course`) as the robot's terrain: boxes, one per stone at
+    its height, pits :data:`STONE_PIT` below the lowest stone between them (a foot there misses:
+    the run ends at it, MISSED); the ground at 0 before the first stone (the start apex's), and
+    beyond the last stone the pit."""
+    from ..robot.terrain import Terrain
+
+    n = int(math.ceil(course.end / STONE_SPACING)) + 1
+    mid = (np.arange(n) + 0.5) * STONE_SPACING
+    under = np.searchsorted(np.asarray(course.x_a), mid, side="right") - 1
+    j = np.clip(under, 0, len(course) - 1)
+    on = (under >= 0) & (mid <= np.asarray(course.x_b)[j])
+    levels = np.where(on, course.heights[j], min(course.height) - STONE_PIT)
+    levels[mid < course.x_a[0]] = 0.0  # the start: the ground under the start apex, to the first stone
+    return Terrain(levels, STONE_SPACING, kind="boxes", margin=20.0)
 
 
 def _row(tables, i: int):
