@@ -152,6 +152,10 @@ def run_figure(run, out_path, *, title: str | None = None):
     grid = fig.add_gridspec(2, 3, height_ratios=(1.35, 1.0))
     ax = fig.add_subplot(grid[0, :])
     _draw_path(ax, path)
+    if sc.stones is not None and "planned_foot" in run.batch.values:  # the footholds' plans
+        planned, stone = run.column("planned_foot"), run.column("planned_stone").astype(int)
+        y = sc.stones.heights[np.clip(stone, 0, None)]
+        ax.plot(planned, y, "^", mfc="none", color=_TARGET, ms=7, label="planned foot")
     span = float(np.ptp(path.x)) if path.x.size else 1.0
     ax.set_aspect("equal" if span < 25 else "auto")
     ax.legend(loc="upper left", fontsize=8, ncol=4, frameon=False)

@@ -7,7 +7,8 @@ descent (g_f) for t_descent to the touchdown, the foot at x_n + foot_x on the to
 the stance sampled from the plant's trajectory (``slipmaps.trajectory`` with the stiffness the
 plant ran with) where the plant has one, else piecewise linear in the polar state through the
 touchdown, bottom and liftoff states (``iterative``: event states only); the ballistic ascent for
-t_ascent. The terrain is flat between feet, each edge halfway between two consecutive feet. The swing
+t_ascent. The terrain is flat between feet, each edge halfway between two consecutive feet (a stones
+course: its stones, :meth:`~.stones.Course.polyline`). The swing
 leg's angle along the flights (``leg``): over a descent the run's record of it (``RunBatch.swing``,
 interpolated), over an ascent the angle the next descent starts with (held).
 """
@@ -158,6 +159,8 @@ def path(run, samples: int = 40) -> Path:
         apexes.append((x_apex, ground_prev + b.values["next_apex_height"][i, n_steps - 1]))
     xs = np.concatenate(X) if X else np.zeros(1)
     terrain = _terrain(np.array(feet_x), np.array(feet_y), float(xs.min()), float(xs.max()))
+    if sc.stones is not None:  # a stones course: its stones, the gaps as pits
+        terrain = sc.stones.polyline()
     return Path(
         t=np.concatenate(T) if T else np.zeros(0),
         x=xs if X else np.zeros(0),
