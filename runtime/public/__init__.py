@@ -20,6 +20,7 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     policy = slipmaps.swing_policy("iterative", params, 1.3, 5.0, 1.3, 5.0, grounds=(-0.3, 0.3),
                                    controls=("touchdown_angle", "k_d"))  # blind: any ground in range
     trip = slipmaps.run("examples/stairs.toml")                          # steps on the exact plant
+    plan = slipmaps.footholds("iterative", params, {"height": 1.0, "speed": 5.0}, stones)  # 2 hops
 
 Conventions (all of them: docs/conventions.md): SI units; leg angle from the vertical,
 counterclockwise positive; polar state ``(q_r, q_rd, q_th, q_thd)``; times in a stance from
@@ -90,6 +91,12 @@ _EXPORTS = {
     "Hops": "slipmaps.runtime.control.identify",
     "RaibertGains": "slipmaps.runtime.control.raibert",
     "load_scenario": "slipmaps.runtime.control.scenarios",
+    "footholds": "slipmaps.runtime.control.footholds",
+    "Footholds": "slipmaps.runtime.control.footholds",
+    "FootholdPlan": "slipmaps.runtime.control.footholds",
+    "FootholdStatus": "slipmaps.runtime.control.footholds",
+    "Course": "slipmaps.runtime.control.stones",
+    "random_course": "slipmaps.runtime.control.stones",
 }
 
 __all__ = sorted(_EXPORTS)
