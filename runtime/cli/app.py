@@ -60,6 +60,7 @@ from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
 from ..api.progress import compile_notices
 from ..api.validate import leg_angle, non_negative, polar_state, positive
+from . import footholds as footholds_cli
 from . import report as report_cli
 from . import robot as robot_cli
 from . import run as run_cli
@@ -274,6 +275,7 @@ def build_parser() -> argparse.ArgumentParser:
     run_cli.add_parser(sub)
     report_cli.add_parser(sub)
     robot_cli.add_parser(sub)
+    footholds_cli.add_parser(sub)
     viability_cli.add_parser(sub)
     return parser
 
@@ -478,6 +480,7 @@ def _run(argv: list[str] | None) -> int:
         "run": run_cli.run,
         "report": report_cli.run,
         "robot": robot_cli.run,
+        "footholds": footholds_cli.run,
         "viability": viability_cli.run,
     }
     try:
