@@ -41,8 +41,9 @@ import time
 from functools import cache
 from pathlib import Path
 
-#: The job that compiles the deadbeat solver's cached kernels (runtime/control/compiled.py: they
-#: compile when it is imported), not a generated module.
+#: The job that compiles the deadbeat solver's and the footholds' cached kernels
+#: (runtime/control/compiled.py, footholds_solver.py: they compile when imported), not a generated
+#: module.
 CONTROL = "control"
 
 #: Roles whose kernels tests call at every choice of a specialized option (the zeroth iterate of
@@ -234,6 +235,7 @@ def compile_job(job: str) -> None:
     """Run one job (:func:`jobs`), or the deadbeat solver's (:data:`CONTROL`), into the cache."""
     if job == CONTROL:
         import slipmaps.runtime.control.compiled  # noqa: F401  (its cached kernels compile on import)
+        import slipmaps.runtime.control.footholds_solver  # noqa: F401  (the footholds' least squares, too)
 
         return
     for function, types, bound in jobs()[job]:

@@ -54,7 +54,7 @@ from ..api.validate import check_params, real
 from . import compiled
 from . import footholds_solver as fs
 from .deadbeat import ANGLE_SCALE, Deadbeat, _controls, control_bounds, default_angle
-from .stones import Course, CourseError
+from .stones import LOOKAHEAD, Course, CourseError
 
 __all__ = ["FootholdPlan", "FootholdStatus", "Footholds", "LOOKAHEAD", "REACH", "WEIGHTS", "footholds"]
 
@@ -64,8 +64,6 @@ __all__ = ["FootholdPlan", "FootholdStatus", "Footholds", "LOOKAHEAD", "REACH", 
 WEIGHTS = {"foot": 1.0, "height": 1.0, "speed": 1.0, "floor": 3.0, "change": 0.01}
 #: The feet a hop reaches about its nominal foothold, in nominal steps (module docstring).
 REACH = 0.3
-#: The stones the planner sees ahead by default.
-LOOKAHEAD = 10
 #: Iterations of a sequence's least squares at most, and its tolerance on the cost's relative change.
 MAX_ITER = 20
 TOL = 1e-8

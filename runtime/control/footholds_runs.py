@@ -23,24 +23,24 @@ its stone's usable part), ``candidates`` (the stone sequences solved).
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..api import model
 from . import compiled
-from .footholds import Footholds, FootholdStatus
 from .plant import Plant, PlantSteps, blank_failed
 from .stones import MISSED, Course, CourseError, met
+
+if TYPE_CHECKING:
+    from .footholds import Footholds
 
 __all__ = ["COLUMNS", "FOOTHOLD", "NO_FOOTHOLD", "PLAN_CODES", "StonesRuns", "check_course"]
 
 #: Plan codes of the footholds policy in a run's records (beside the deadbeat's 0-2 and BLIND, 4).
 FOOTHOLD, NO_FOOTHOLD = 5, 6
-PLAN_CODES = {
-    FootholdStatus.FOOTHOLD: FOOTHOLD,
-    FootholdStatus.NO_FOOTHOLD: NO_FOOTHOLD,
-    FootholdStatus.MAP_FAILED: compiled.MAP_FAILED,
-}
+#: A plan's status (:class:`~.footholds.FootholdStatus`, by value) -> its code in the records.
+PLAN_CODES = {"FOOTHOLD": FOOTHOLD, "NO_FOOTHOLD": NO_FOOTHOLD, "MAP_FAILED": compiled.MAP_FAILED}
 #: The policy's own per-step records (module docstring).
 COLUMNS = (
     "apex_x",
@@ -83,6 +83,8 @@ class StonesRuns:
     columns = COLUMNS
 
     def __init__(self, sc, plant):
+        from .footholds import Footholds  # the planner's solver compiles on import: here, when used
+
         self.sc = sc
         self.course: Course = sc.stones
         self.planner = Footholds(
@@ -140,7 +142,7 @@ class StonesRuns:
             self.plans[r] = plan
             out["touchdown_angle"][j] = plan.touchdown_angle
             out["k_c"][j], out["k_d"][j] = plan.k_c[0], plan.k_d[0]
-            out["status"][j] = PLAN_CODES[plan.status]
+            out["status"][j] = PLAN_CODES[plan.status.value]
             out["solve_us"][j] = plan.solve_us
             out["candidates"][j] = plan.candidates
             k = plan.stones[0]

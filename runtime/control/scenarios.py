@@ -63,11 +63,10 @@ from ..api.numeric import is_real, num
 from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipParams
 from ..api.validate import limit, limit_text
 from .deadbeat import CONTROLS, control_bounds
-from .footholds import LOOKAHEAD
 from .plant import ROBOT
 from .raibert import RaibertGains
 from .scenario_keys import KEY_DOCS
-from .stones import Course, CourseError, random_course
+from .stones import LOOKAHEAD, Course, CourseError, random_course
 
 __all__ = ["Scenario", "ScenarioError", "from_dict", "load", "load_scenario", "read_toml", "resized", "KEYS"]
 

@@ -31,7 +31,7 @@ import numpy as np
 
 from ..api.numeric import is_real, num
 
-__all__ = ["Course", "CourseError", "MISSED", "met", "random_course"]
+__all__ = ["Course", "CourseError", "LOOKAHEAD", "MISSED", "met", "random_course"]
 
 #: The plant status of a step whose foot landed outside every stone's usable part (a miss): a run's
 #: own code, far above the kernels' :class:`~slipmaps.Status` codes (which are appended from 0 on).
@@ -39,6 +39,8 @@ MISSED = 100
 #: Its name and meaning.
 MISSED_NAME = "MISSED"
 MISSED_MESSAGE = "the foot landed outside every stone's usable part (a miss): the runner falls there"
+#: The stones a controller sees ahead by default (a scenario's ``lookahead``, the planner's).
+LOOKAHEAD = 10
 
 
 class CourseError(ValueError):
@@ -173,8 +175,8 @@ def _validate(c: Course) -> None:
             raise CourseError(f"stone {i} must have x_b > x_a, got [{num(a)}, {num(b)}]")
         if b - a <= 2.0 * c.margin:
             raise CourseError(
-                f"stone {i} ([{num(a)}, {num(b)}] m, {num(b - a)} m wide) has no usable part: the margin "
-                f"{num(c.margin)} m on either end needs it wider than {num(2.0 * c.margin)} m"
+                f"stone {i} ([{num(a)}, {num(b)}] m, {b - a:.6g} m wide) has no usable part: the margin "
+                f"{num(c.margin)} m on either end needs it wider than {2.0 * c.margin:.6g} m"
             )
         if i and a < c.x_b[i - 1]:
             raise CourseError(
