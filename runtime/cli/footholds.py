@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import argparse
 
-from .robot import _out
+from .study import add_study_flags, run_study
 
 __all__ = ["add_parser", "run"]
 
@@ -28,24 +28,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
         "and write footholds.json, footholds.md, its figures and clip into the checkout's docs/ or "
         "--out DIR.",
     )
-    p.add_argument("--out", default=None, metavar="DIR", help="the directory to write into (default: docs/)")
-    p.add_argument("--quick", action="store_true", help="the small version (needs --out)")
-    p.add_argument("--jobs", type=int, default=None, metavar="N", help="processes (default: the cores)")
-    p.add_argument("--no-gif", action="store_true", help="do not render the clip")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+    add_study_flags(p)
     return p
 
 
 def run(args: argparse.Namespace) -> int:
-    if args.jobs is not None and args.jobs < 1:
-        raise ValueError(f"--jobs must be at least 1, got {args.jobs}")
-    from ..robot.mj import mujoco
-
-    mujoco()  # the robot's part needs the extra: one line naming it when missing, before any work
-    out = _out(args)
     from ..studies.footholds_report import write
 
-    progress = False if args.no_progress else None
-    for path in write(out, quick=args.quick, jobs=args.jobs, progress=progress, gif=not args.no_gif):
-        print(f"wrote {path}")
-    return 0
+    return run_study(args, write)

@@ -25,8 +25,8 @@ import sys
 import time
 from pathlib import Path
 
-from ..api.paths import writable_dir
 from ..api.progress import is_terminal
+from .study import study_out
 
 __all__ = ["QUICK_MAPS", "Stages", "add_parser", "run"]
 
@@ -50,19 +50,6 @@ def add_parser(sub) -> argparse.ArgumentParser:
     mode.add_argument("--quick", action="store_true", help="the reduced version (needs --out)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     return p
-
-
-def _out(args: argparse.Namespace) -> Path:
-    from ..studies.checkout import docs_dir
-
-    if args.out is not None:
-        return writable_dir("--out", args.out)
-    if args.quick:
-        raise ValueError("--quick writes a reduced report: give --out DIR (never docs/)")
-    docs = docs_dir()
-    if docs is None:
-        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
-    return docs
 
 
 class Stages:
@@ -114,7 +101,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..report import sections
     from ..studies.checkout import checkout_root
 
-    out = _out(args)  # before any work
+    out = study_out(args, "a reduced report")  # before any work
     show = False if args.no_progress else None
     written: list[Path] = []
     if args.render_only:

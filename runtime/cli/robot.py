@@ -12,9 +12,8 @@ docs/). ``--jobs N``: processes (default: the machine's cores); ``--no-gif``: no
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
-from ..api.paths import writable_dir
+from .study import add_study_flags, run_study
 
 __all__ = ["add_parser", "run"]
 
@@ -29,37 +28,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
         "cost) and write robot.json, robot.md, its figures and clip into the checkout's docs/ or --out DIR. "
         "Needs the robot extra: pip install 'slipmaps[robot]'.",
     )
-    p.add_argument("--out", default=None, metavar="DIR", help="the directory to write into (default: docs/)")
-    p.add_argument("--quick", action="store_true", help="the small version (needs --out)")
-    p.add_argument("--jobs", type=int, default=None, metavar="N", help="processes (default: the cores)")
-    p.add_argument("--no-gif", action="store_true", help="do not render the clip")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+    add_study_flags(p)
     return p
 
 
-def _out(args: argparse.Namespace) -> Path:
-    from ..studies.checkout import docs_dir
-
-    if args.out is not None:
-        return writable_dir("--out", args.out)
-    if args.quick:
-        raise ValueError("--quick writes a small study: give --out DIR (never docs/)")
-    docs = docs_dir()
-    if docs is None:
-        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
-    return docs
-
-
 def run(args: argparse.Namespace) -> int:
-    if args.jobs is not None and args.jobs < 1:
-        raise ValueError(f"--jobs must be at least 1, got {args.jobs}")
-    from ..robot.mj import mujoco
-
-    mujoco()  # the extra, before any work (one line naming it when missing)
-    out = _out(args)
     from ..studies.robot_report import write
 
-    progress = False if args.no_progress else None
-    for path in write(out, quick=args.quick, jobs=args.jobs, progress=progress, gif=not args.no_gif):
-        print(f"wrote {path}")
-    return 0
+    return run_study(args, write)

@@ -14,9 +14,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..api.paths import save_figure, writing
+from ..api.paths import save_figure
 from .report_format import fails, pct
-from .study import from_json, to_json
+from .study import machine, write_files
 
 __all__ = ["TARGETS", "clip", "course_figure", "render", "success_figure", "verdicts", "write"]
 
@@ -90,6 +90,14 @@ def _table(head: list[str], rows: list[list[str]]) -> list[str]:
     return out + [""]
 
 
+def _per_planner(rec: dict, cell, extra: dict | None = None) -> list[list[str]]:
+    """A row per family: its name, its ``extra`` cells, then ``cell`` of each planner's summary."""
+    return [
+        [fam, *(extra or {}).get(fam, [])] + [cell(p[label]) for label in rec["planners"]]
+        for fam, p in rec["courses"].items()
+    ]
+
+
 def _range(pair) -> str:
     return f"{pair[0]:g}-{pair[1]:g}"
 
@@ -149,25 +157,16 @@ def render(rec: dict) -> str:
         "",
     ]
     head = ["family", "widths [m]", "gaps [m]", "rises [m]", *rec["planners"]]
-    rows = []
-    for fam, p in rec["courses"].items():
-        f = rec["families"][fam]
-        rows.append(
-            [fam, _range(f["width"]), _range(f["gap"]), f"+-{f['rise']:g}"]
-            + [
-                f"{pct(p[label]['success'])} ({p[label]['succeeded']}/{p[label]['runs']})"
-                for label in rec["planners"]
-            ]
-        )
-    L += _table(head, rows)
+    fam = rec["families"]
+    shape = {f: [_range(fam[f]["width"]), _range(fam[f]["gap"]), f"+-{fam[f]['rise']:g}"] for f in fam}
+    L += _table(
+        head, _per_planner(rec, lambda s: f"{pct(s['success'])} ({s['succeeded']}/{s['runs']})", shape)
+    )
     L += ["What ended the other runs, and the hops they made on average:", ""]
-    rows = []
-    for fam, p in rec["courses"].items():
-        rows.append(
-            [fam]
-            + [f"{fails(p[label]['ended'])}; {p[label]['hops_mean']:.1f} hops" for label in rec["planners"]]
-        )
-    L += _table(["family", *rec["planners"]], rows)
+    L += _table(
+        ["family", *rec["planners"]],
+        _per_planner(rec, lambda s: f"{fails(s['ended'])}; {s['hops_mean']:.1f} hops"),
+    )
     L += [
         "`MISSED`: a foot outside every stone's usable part; `LIFTOFF_DOWNWARD`, `APEX_TOO_LOW`: the "
         "plant's step failed (a hop the plan left with no room to rise, or an apex too low to touch "
@@ -241,12 +240,10 @@ def render(rec: dict) -> str:
         "the runs shared the machine's cores):",
         "",
     ]
-    rows = []
-    for fam, p in rec["courses"].items():
-        rows.append(
-            [fam] + [f"{_us(p[label]['us_median'])} / {_us(p[label]['us_p95'])}" for label in rec["planners"]]
-        )
-    L += _table(["family", *rec["planners"]], rows)
+    L += _table(
+        ["family", *rec["planners"]],
+        _per_planner(rec, lambda s: f"{_us(s['us_median'])} / {_us(s['us_p95'])}"),
+    )
     L += [
         "A replan at horizon 2 on one core (`replan_times`: a run's apexes planned again, each "
         "warm-started as in the run, the best of 5 per apex; `python benchmarks/bench_footholds.py` "
@@ -378,24 +375,8 @@ def write(
 ) -> list[Path]:
     """Measure and write the study into the directory ``out`` (module docstring): the paths written."""
     from .footholds import measure
-    from .robot_report import _machine  # the machine's description, as the robot study gives it
 
-    out = Path(out)
     rec = measure(quick=quick, jobs=jobs, progress=progress)
-    rec["machine"] = _machine()
-    js, md = out / "footholds.json", out / "footholds.md"
-    text = to_json(rec)
-    with writing(js):
-        js.write_text(text, encoding="utf-8")
-    written = from_json(text)
-    with writing(md):
-        md.write_text(render(written), encoding="utf-8")
-    paths = [
-        js,
-        md,
-        course_figure(written, out / "footholds_course.png"),
-        success_figure(written, out / "footholds_success.png"),
-    ]
-    if gif:
-        paths.append(clip(written, out / "footholds.gif"))
-    return paths
+    rec["machine"] = machine()
+    figures = {"footholds_course.png": course_figure, "footholds_success.png": success_figure}
+    return write_files(out, "footholds", rec, render, figures, clip if gif else None)

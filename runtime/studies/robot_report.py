@@ -9,14 +9,12 @@ its correction on +-10 cm ramps at 4 m/s, MuJoCo's renderer headless, a drawing 
 from __future__ import annotations
 
 import math
-import os
-import platform
 from pathlib import Path
 
 import numpy as np
 
-from ..api.paths import save_figure, writing
-from .study import from_json, to_json
+from ..api.paths import save_figure
+from .study import machine, write_files
 
 __all__ = ["TARGETS", "clip", "render", "verdicts", "write"]
 
@@ -436,19 +434,6 @@ def clip(rec: dict, path, hops: int = 6, fps: float = 20.0) -> Path:
     return write_gif(images, path, fps)
 
 
-def _machine() -> str:
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-    return f"{cpu}, {os.cpu_count()} cores"
-
-
 def write(
     out: str | Path, *, quick: bool = False, jobs: int | None = None, progress=None, gif: bool = True
 ) -> list[Path]:
@@ -456,23 +441,8 @@ def write(
     from ..robot.mj import mujoco
     from .robot import measure
 
-    out = Path(out)
     rec = measure(quick=quick, jobs=jobs, progress=progress)
-    rec["machine"] = _machine()
+    rec["machine"] = machine()
     rec["mujoco"] = mujoco().__version__
-    js, md = out / "robot.json", out / "robot.md"
-    text = to_json(rec)
-    with writing(js):
-        js.write_text(text, encoding="utf-8")
-    written = from_json(text)
-    with writing(md):
-        md.write_text(render(written), encoding="utf-8")
-    paths = [
-        js,
-        md,
-        tracking_figure(written, out / "robot_tracking.png"),
-        ramps_figure(written, out / "robot_ramps.png"),
-    ]
-    if gif:
-        paths.append(clip(written, out / "robot.gif"))
-    return paths
+    figures = {"robot_tracking.png": tracking_figure, "robot_ramps.png": ramps_figure}
+    return write_files(out, "robot", rec, render, figures, clip if gif else None)

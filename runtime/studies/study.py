@@ -15,13 +15,15 @@ and Markdown, and the Markdown is a function of the JSON.
 from __future__ import annotations
 
 import json
+import os
+import platform
 from abc import ABC, abstractmethod
 from pathlib import Path
 
 from ..api.paths import writing
 from .report_format import rounded
 
-__all__ = ["VERSION", "Study", "to_json", "from_json", "paths", "write"]
+__all__ = ["VERSION", "Study", "to_json", "from_json", "machine", "paths", "write", "write_files"]
 
 #: The version of the records' format (the ``version`` key of every docs/*.json).
 VERSION = 1
@@ -83,3 +85,37 @@ def write(study: Study, md: str | Path, show_progress: bool | None = None) -> li
         md.write_text(study.markdown(record, png.name), encoding="utf-8")
     with writing(png):
         return [md, js, study.figure(record, png)]
+
+
+def machine() -> str:
+    """The machine a study ran on, as its page states it: the CPU's model name and the cores."""
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    return f"{cpu}, {os.cpu_count()} cores"
+
+
+def write_files(out: str | Path, stem: str, record: dict, render, figures: dict, clip=None) -> list[Path]:
+    """A study's files in ``out`` (the studies of ``slipmaps robot``, ``slipmaps footholds``):
+    ``<stem>.json`` (``record``, :func:`to_json`), ``<stem>.md`` (``render`` of the record as the
+    file holds it), each figure (``file name -> draw(record, path)``) and, with ``clip``, the clip
+    ``<stem>.gif`` (``clip(record, path)``), all drawn from the record as written; the paths in
+    that order."""
+    out = Path(out)
+    js, md = out / f"{stem}.json", out / f"{stem}.md"
+    text = to_json(record)
+    with writing(js):
+        js.write_text(text, encoding="utf-8")
+    written = from_json(text)
+    with writing(md):
+        md.write_text(render(written), encoding="utf-8")
+    paths = [js, md, *(draw(written, out / name) for name, draw in figures.items())]
+    if clip is not None:
+        paths.append(clip(written, out / f"{stem}.gif"))
+    return paths

@@ -1,0 +1,58 @@
+"""What the study commands share (``slipmaps robot``, ``slipmaps footholds``): their flags, where
+they write, and their run.
+
+A study command measures its study again and rebuilds its page, record, figures and clip into the
+checkout's docs/ or ``--out DIR``; ``--quick`` the small version CI runs (``--out`` required: it
+never overwrites docs/); ``--jobs N`` processes (default: the machine's cores); ``--no-gif`` no
+clip; ``--no-progress`` no progress bar. Both studies run the MuJoCo robot, so the extra is checked
+first (one line naming it when missing).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..api.paths import writable_dir
+
+__all__ = ["add_study_flags", "run_study", "study_out"]
+
+
+def add_study_flags(p: argparse.ArgumentParser) -> None:
+    """The study commands' flags (module docstring)."""
+    p.add_argument("--out", default=None, metavar="DIR", help="the directory to write into (default: docs/)")
+    p.add_argument("--quick", action="store_true", help="the small version (needs --out)")
+    p.add_argument("--jobs", type=int, default=None, metavar="N", help="processes (default: the cores)")
+    p.add_argument("--no-gif", action="store_true", help="do not render the clip")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+
+
+def study_out(args: argparse.Namespace, small: str = "a small study") -> Path:
+    """The directory a study (or ``slipmaps report``) writes into: ``--out``, else the checkout's
+    docs/ (ValueError, one line, for ``--quick`` without ``--out``, which writes ``small``, and
+    outside a checkout)."""
+    from ..studies.checkout import docs_dir
+
+    if args.out is not None:
+        return writable_dir("--out", args.out)
+    if args.quick:
+        raise ValueError(f"--quick writes {small}: give --out DIR (never docs/)")
+    docs = docs_dir()
+    if docs is None:
+        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
+    return docs
+
+
+def run_study(args: argparse.Namespace, write) -> int:
+    """Run a study command: its flags checked, the robot's extra, then ``write(out, quick=, jobs=,
+    progress=, gif=)`` (the study's writer), each path written printed."""
+    if args.jobs is not None and args.jobs < 1:
+        raise ValueError(f"--jobs must be at least 1, got {args.jobs}")
+    from ..robot.mj import mujoco
+
+    mujoco()  # the extra, before any work (one line naming it when missing)
+    out = study_out(args)
+    progress = False if args.no_progress else None
+    for path in write(out, quick=args.quick, jobs=args.jobs, progress=progress, gif=not args.no_gif):
+        print(f"wrote {path}")
+    return 0
