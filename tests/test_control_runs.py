@@ -36,7 +36,9 @@ def example_runs():
 
 
 def test_the_examples_are_the_evaluations_scenarios():
-    others = {"sweep", "blind_running"}  # a sweep's file; the blind-running example (tests/test_swing.py)
+    # a sweep's file; the blind-running example (tests/test_swing.py); the stepping stones' example
+    # (tests/test_footholds.py)
+    others = {"sweep", "blind_running", "stones"}
     robot = {p.stem for p in EXAMPLES.glob("robot_*.toml")}  # the robot's (tests/test_robot_runs.py)
     assert robot, "the robot's examples are gone"
     assert sorted(p.stem for p in EXAMPLES.glob("*.toml") if p.stem not in others | robot) == sorted(NAMES)

@@ -585,15 +585,30 @@ def footholds(
     if plan.candidates == 0:
         ahead = course.ahead(x, 3)
         where = (
-            ", ".join(f"[{num(course.lo[i])}, {num(course.hi[i])}] m" for i in ahead)
+            ", ".join(f"[{course.lo[i]:.6g}, {course.hi[i]:.6g}] m" for i in ahead)
             if ahead.size
-            else f"none (the course ends at {num(course.end)} m)"
+            else f"none (the course ends at {course.end:.6g} m)"
+        )
+        step = planner.nominal_step(*(plan_target(t, d) for t, d in ((target_height, h), (target_speed, v))))[
+            0
+        ]
+        foot = planner.nominal_step(h, v)[1]
+        reach = planner.reach * step
+        window = (
+            f"within about [{x + foot - reach:.3g}, {x + foot + reach:.3g}] m "
+            if math.isfinite(foot) and math.isfinite(reach)
+            else ""
         )
         raise CourseError(
-            f"stones: no stone within reach of the apex at x = {num(x)} m (the first foot lands within "
-            f"{num(planner.reach)} nominal steps of the neutral foothold); the usable parts ahead: {where}"
+            f"stones: no stone within reach of the apex at x = {x:.6g} m: the first foot lands {window}"
+            f"(the neutral foothold +-{planner.reach:g} nominal steps); the usable parts ahead: {where}"
         )
     return plan
+
+
+def plan_target(value, default: float) -> float:
+    """A hop's first target: ``value`` (a number or one per hop), else ``default``."""
+    return default if value is None else float(np.atleast_1d(np.asarray(value, dtype=float))[0])
 
 
 _PLANNERS: dict = {}
