@@ -159,7 +159,7 @@ class Footholds:
     compiled least squares bound to them, the controls and their bounds. ``horizon`` (0: the
     deadbeat baseline, else the hops planned), ``lookahead`` (the stones seen), ``reach``,
     ``min_height`` (the floor of every planned apex above the next stone; default l0),
-    ``weights`` (over :data:`WEIGHTS`), ``max_iter`` and ``tol`` (a sequence's least squares);
+    ``weights`` (over the module's ``WEIGHTS``), ``max_iter`` and ``tol`` (a sequence's least squares);
     ``options`` the map's. The first plan compiles the solver for the map (seconds; cached on disk
     after the first process)."""
 
@@ -552,7 +552,7 @@ def footholds(
 
     ``apex``: a mapping with ``height`` [m] (above the ground under it), ``speed`` [m/s] and
     optionally ``x`` [m] (default 0) and ``ground`` [m] (the absolute height of the ground under it;
-    default the stone under ``x``, else 0). ``stones``: a :class:`~.stones.Course`, or a list of
+    default the stone under ``x``, else 0). ``stones``: a :class:`~slipmaps.Course`, or a list of
     ``[x_a, x_b, height]`` [m] with ``margin`` [m] (default 0; given with a Course, it replaces the
     course's). ``horizon``: the hops planned (0: the deadbeat baseline); ``controls`` the deadbeat's
     (default the angle and k_d, the angle alone for a constant-stiffness map); ``lookahead`` the

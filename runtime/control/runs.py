@@ -17,8 +17,10 @@ Each step of a run (:func:`run`, :func:`run_batch` for many runs in lockstep):
    angle held through the flight; ``retraction``, the same solve with the leg retracting at
    ``retraction_rate`` after the apex; ``time-based``, a swing policy (:mod:`.swing`) over the
    scenario's ``grounds`` around the expected ground, its controls read where the leg meets the true
-   ground. A solve's controls are applied whatever its status (the closest reachable ones when
-   UNREACHABLE; when the map failed, the previous step's angle and the nominal stiffness);
+   ground; ``footholds`` on a stones course, the stones and the controls of the next ``horizon``
+   hops planned (:mod:`.footholds_runs`: a foot outside every stone is MISSED). A solve's controls
+   are applied whatever its status (the closest reachable ones when UNREACHABLE; when the map
+   failed, the previous step's angle and the nominal stiffness);
 5. the plant step (:class:`~.plant.Plant`: the exact simulator by default; with the scenario's mass
    and stiffness mismatch: the plant's mass is (1 + mismatch) times the model's, its springs (1 +
    mismatch) times the commanded stiffness); two-stage: the plant's compression half, the k_d chosen
@@ -37,7 +39,8 @@ meets the true ground at another time and angle, so its apex misses by the groun
 -1.0``; a time-based step reads its status where the leg met the true ground, so it is never
 BLIND); ``UNREACHABLE``, ``MAP_FAILED``; ``OUT_OF_RANGE`` for a time-based step whose ground lies
 outside its policy's; ``FIXED`` for a fixed-angle run, the self-stable baseline; ``FEEDBACK`` for
-Raibert's controller, which plans nothing), the plant
+Raibert's controller, which plans nothing; ``FOOTHOLD`` and ``NO_FOOTHOLD`` for the footholds
+policy, its feet inside their stones over its horizon or not), the plant
 status, the next apex (``next_apex_height``, ``next_apex_speed``: the names of every result,
 ``slipmaps.runtime.api.names``; the former ``next_height``, ``next_speed`` still read, with a
 DeprecationWarning) and its error against the planned target, the step length, the controller's

@@ -14,7 +14,7 @@ each touchdown (``ground``: absolute heights, the ground under the start apex at
     [targets]                    # a number, a list per step (the last value held), or a ramp
     height = 1.0
     speed = { from = 3.0, to = 7.0, steps = 10 }    # from step 0 (start = k: from step k), then held
-    [terrain]                    # kind: flat, steps (heights = [...]), stairs, random
+    [terrain]                    # kind: flat, steps (heights = [...]), stairs, random, stones
     kind = "stairs"
     rise = 0.1                   # m per stair; `before` flat steps, `up` stairs, `flat` on top, `down`
     up = 4
@@ -22,7 +22,7 @@ each touchdown (``ground``: absolute heights, the ground under the start apex at
     [control]                    # controls, bounds, two_stage, decompression, aim, min_height, fixed_angle
     controls = ["touchdown_angle", "k_d"]   # default; the angle alone for a constant-stiffness model
     bounds = { k_d = [10000.0, 40000.0] }
-    policy = "apex"              # the swing leg: apex, retraction (retraction_rate), time-based
+    policy = "apex"              # the swing leg: apex, retraction (retraction_rate), time-based, ...
     [params]                     # SlipParams fields (the controller's); default the human runner
     [mismatch]                   # the plant's mass and stiffness off by a fraction: mass = 0.05
     [noise]                      # apex measurement noise (standard deviations) and its seed
@@ -33,7 +33,10 @@ each touchdown (``ground``: absolute heights, the ground under the start apex at
 
 ``kind = "random"`` draws each step's ground change uniformly in +-``amplitude`` [m] (seeded by the
 terrain's ``seed``); ``stairs`` rises by ``rise`` per stair (``before``, ``up``, ``flat``, ``down``
-steps).
+steps); ``stones`` is a course of stepping stones (:mod:`.stones`: ``stones = [[x_a, x_b, height],
+...]`` listed, or drawn from ``count``, ``width``, ``gap``, ``rise``, ``seed``; a ``margin``; the
+controller sees ``lookahead`` stones ahead), hopped by ``policy = "footholds"`` only
+(:mod:`.footholds_runs`; ``horizon`` the hops it plans ahead).
 
 The swing leg (``[control] policy``): ``"apex"`` (the deadbeat at the apex sets the touchdown angle,
 held until the foot meets the ground), ``"retraction"`` (the same solve with the leg retracting at

@@ -51,7 +51,7 @@ class CourseError(ValueError):
 class Course:
     """Stones (module docstring): their ends ``x_a``, ``x_b`` [m] and ``height`` [m] (tuples of
     floats, sorted along x), and the ``margin`` [m] every foot keeps from a stone's ends. Build it
-    with :meth:`of` (validated); ``len(course)`` is the number of stones."""
+    with :meth:`Course.of` (validated); ``len(course)`` is the number of stones."""
 
     x_a: tuple[float, ...]
     x_b: tuple[float, ...]
@@ -64,8 +64,8 @@ class Course:
     @classmethod
     def of(cls, stones, margin: float = 0.0, where: str = "stones") -> Course:
         """A course from ``stones`` (a :class:`Course`, whose margin ``margin`` replaces, or a
-        sequence of ``[x_a, x_b, height]``) and ``margin``; :class:`CourseError` naming ``where``
-        and the stone."""
+        sequence of ``[x_a, x_b, height]``) and ``margin``; a ValueError (``CourseError``) naming
+        ``where`` and the stone."""
         if isinstance(stones, Course):
             return cls(stones.x_a, stones.x_b, stones.height, _margin(margin, where))
         try:
