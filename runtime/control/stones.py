@@ -107,8 +107,9 @@ class Course:
 
     @cached_property
     def table(self) -> np.ndarray:
-        """The stones as the footholds solver reads them (n, 6): each usable part's ends, centre
-        and half-width, the height, and the next stone's height (the last's own)."""
+        """An array (n, 6), the stones as the footholds solver reads them; per stone its usable
+        part's ends, centre and half-width, its height, the next stone's height (the last one's
+        own)."""
         lo, hi, y = self.lo, self.hi, self.heights
         nxt = np.append(y[1:], y[-1])
         return np.ascontiguousarray(np.stack([lo, hi, 0.5 * (lo + hi), 0.5 * (hi - lo), y, nxt], axis=1))
