@@ -13,11 +13,15 @@ from __future__ import annotations
 
 import os
 
-__all__ = ["SMALL", "available", "check"]
+__all__ = ["FEW_ROWS", "SMALL", "available", "check"]
 
 #: Needs below this many bytes are not checked (reading the machine's memory costs about 20 us, a
 #: scalar call's few times; no machine that runs numba lacks 64 MB).
 SMALL = 64 * 2**20
+#: A batch of at most this many rows needs less than :data:`SMALL` whatever its kernel (the widest
+#: row, the exact map's Jacobian, takes 1.3 kB; a test checks every role), so it is not estimated:
+#: a batch of a few rows costs what a scalar call does.
+FEW_ROWS = 16_384
 
 
 def available() -> int | None:

@@ -64,6 +64,7 @@ _EXPORTS = {
     "RobustSet": "slipmaps.runtime.analysis.viability_robust",
     "Result": "slipmaps.runtime.api.results",
     "BatchResult": "slipmaps.runtime.api.results",
+    "BatchInterrupted": "slipmaps.runtime.api.batch",
     "Status": "slipmaps.generated.status",
     "Sweep": "slipmaps.runtime.sweep.run",
     "sweep": "slipmaps.runtime.sweep.run",
