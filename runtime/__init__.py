@@ -7,5 +7,11 @@ is generated: generated/exact_stance.py, generated/dop853.py) < ``analysis`` (pe
 studies and their reports) < ``control`` (deadbeat steps, runs, scenarios and their evaluation: it
 uses ``api`` and ``analysis``) < ``report`` (the report's sections 6-8, written from the studies' and
 the control evaluation's records) < ``cli`` (one module per command). Where numba caches the compiled
-kernels is set up by the top-level package (``slipmaps.kernel_cache``).
+kernels is set up by the top-level package (``slipmaps.kernel_cache``); a kernel compiling on its
+first call is a line on standard error from the moment the runtime is imported (any public name
+but ``Status`` and ``MESSAGES`` imports it; ``slipmaps.derive`` does not): ``api/notices.py``.
 """
+
+from .api import notices as _notices
+
+_notices.install()

@@ -44,7 +44,7 @@ probe file created and removed) before any work. A reader that closes standard o
 Ctrl-C ends any command with one line and :data:`INTERRUPTED` (130). An OSError while writing is
 one line naming the path and the reason, exit 2 (``paths.writing``). On a terminal, numba compiling
 a kernel on its first use (an empty or stale cache) is one line on standard error with its seconds
-(:func:`~slipmaps.runtime.api.progress.compile_notices`; none with ``--no-progress`` or when
+(:func:`~slipmaps.runtime.api.notices.compile_notices`; none with ``--no-progress`` or when
 standard error is piped). The map names and options come from the generated index.
 """
 
@@ -56,9 +56,9 @@ import os
 import sys
 from pathlib import Path
 
+from ..api.notices import compile_notices
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
-from ..api.progress import compile_notices
 from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import report as report_cli
 from . import run as run_cli

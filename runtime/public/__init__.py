@@ -85,6 +85,7 @@ _EXPORTS = {
     "RunBatch": "slipmaps.runtime.control.runs",
     "Scenario": "slipmaps.runtime.control.scenarios",
     "load_scenario": "slipmaps.runtime.control.scenarios",
+    "notices": "slipmaps.runtime.api.notices",
 }
 
 __all__ = sorted(_EXPORTS)
