@@ -1,5 +1,5 @@
 """Progress on standard error for long work: a minimal bar for long loops (exact batches, accuracy
-grids, sweeps). What numba compiling a kernel says is :mod:`.notices`'s.
+grids, sweeps, the warm-up). What numba compiling a kernel says is :mod:`.notices`'s.
 
 A bar is shown when asked (``enabled=True``) or, with ``enabled=None``, when the loop is long
 (:func:`progress`: many items; :class:`Bar`: running for more than a second) and standard error is
@@ -83,9 +83,10 @@ class Bar:
         elapsed = now - self._start
         new = self.done - self._initial
         eta = (self.total - self.done) * elapsed / new if new > 0 else float("inf")
+        remaining = f"{eta:5.1f}s" if eta != float("inf") else "    ?s"  # nothing done yet: no rate
         sys.stderr.write(
             f"\r{self.label}: [{'#' * full}{'.' * (self.WIDTH - full)}] {self.done}/{self.total}{self.unit} "
-            f"{elapsed:5.1f}s < {eta:5.1f}s "
+            f"{elapsed:5.1f}s < {remaining} "
         )
         sys.stderr.flush()
         self._drawn = True

@@ -33,7 +33,9 @@ Subcommands (``slipmaps --version`` prints the installed version):
   (runtime/cli/report.py);
 - ``viability [--vibly | --energy J --heights MIN MAX N | --speeds ...] [--json] [--out PATH.npz]``:
   the viable set, the viability kernel and its measure on a grid, with a figure
-  (runtime/cli/viability.py).
+  (runtime/cli/viability.py);
+- ``warmup [MAPS]``: compile the kernels into numba's disk cache ahead, on every core, with a
+  progress bar (runtime/cli/warmup.py).
 
 A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
 that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
@@ -64,6 +66,7 @@ from . import report as report_cli
 from . import run as run_cli
 from . import sweep as sweep_cli
 from . import viability as viability_cli
+from . import warmup as warmup_cli
 from .args import add_params, image_path, map_options, params_of, stiffness_note
 from .defaults import (
     APEX_FROUDE,
@@ -273,6 +276,7 @@ def build_parser() -> argparse.ArgumentParser:
     run_cli.add_parser(sub)
     report_cli.add_parser(sub)
     viability_cli.add_parser(sub)
+    warmup_cli.add_parser(sub)
     return parser
 
 
@@ -476,6 +480,7 @@ def _run(argv: list[str] | None) -> int:
         "run": run_cli.run,
         "report": report_cli.run,
         "viability": viability_cli.run,
+        "warmup": warmup_cli.run,
     }
     try:
         # numba compiling a kernel on first use (tens of seconds on an empty cache) is a line on a
