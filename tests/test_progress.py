@@ -302,3 +302,17 @@ def test_report_piped_is_one_plain_line_per_stage(report_stages, capsys):
     n = len(ran)
     assert err.splitlines() == [f"slipmaps report: [{i}/{n}] {what}" for i, what in enumerate(ran, 1)]
     assert "\r" not in err
+
+
+def test_a_bar_counts_the_items_of_a_loop_and_closes_after_the_last():
+    from slipmaps.runtime.api.progress import Bar
+
+    stream = Terminal()
+    sys_stderr, sys.stderr = sys.stderr, stream
+    try:
+        assert list(Bar(3, "kernels", True, unit="kernels").count("abc")) == ["a", "b", "c"]
+    finally:
+        sys.stderr = sys_stderr
+    text = stream.getvalue()
+    assert text.rstrip("\n").split("\r")[-1].startswith("kernels: [########################] 3/3 kernels")
+    assert text.endswith("\n") and text.count("\n") == 1

@@ -1,5 +1,6 @@
 """Progress on standard error for long work: a minimal bar for long loops (exact batches, accuracy
-grids, sweeps, the warm-up). What numba compiling a kernel says is :mod:`.notices`'s.
+grids, sweeps, the warm-up) and a line per stage of a command (:class:`Stages`). What numba
+compiling a kernel says is :mod:`.notices`'s.
 
 A bar is shown when asked (``enabled=True``) or, with ``enabled=None``, when the loop is long
 (:func:`progress`: many items; :class:`Bar`: running for more than a second) and standard error is
@@ -13,7 +14,7 @@ import time
 from collections.abc import Iterable, Iterator
 from typing import TypeVar
 
-__all__ = ["AUTO_MIN_ITEMS", "Bar", "is_terminal", "progress"]
+__all__ = ["AUTO_MIN_ITEMS", "Bar", "Stages", "clock", "is_terminal", "progress"]
 
 T = TypeVar("T")
 
@@ -91,6 +92,16 @@ class Bar:
         sys.stderr.flush()
         self._drawn = True
 
+    def count(self, items: Iterable[T]) -> Iterator[T]:
+        """Yield ``items``, each counted done after its turn; the bar closed after the last (or when
+        the loop stops early)."""
+        try:
+            for item in items:
+                yield item
+                self.update(1)
+        finally:
+            self.close()
+
     def close(self) -> None:
         if self._drawn:
             self._draw(time.perf_counter())
@@ -111,3 +122,37 @@ def is_terminal(stream) -> bool:
         return bool(stream.isatty())
     except (AttributeError, ValueError):  # no isatty, or a closed stream
         return False
+
+
+class Stages:
+    """A command's progress by stages on standard error: a line as each of its ``n`` stages starts,
+    ``{command}: [i/n] what``, so a log holds one line per stage; on a terminal each line also
+    gives the time since the command started, and :meth:`done` a last line with the total. The
+    stages' own bars and the compile notices come between the lines on a terminal only."""
+
+    def __init__(self, n: int, command: str) -> None:
+        self.n = n
+        self.command = command
+        self.i = 0
+        self.start = time.perf_counter()
+
+    def __call__(self, what: str) -> None:
+        self.i += 1
+        line = f"{self.command}: [{self.i}/{self.n}] {what}"
+        if is_terminal(sys.stderr):
+            line += f" ({clock(time.perf_counter() - self.start)} so far)"
+        print(line, file=sys.stderr, flush=True)
+
+    def done(self) -> None:
+        if is_terminal(sys.stderr):
+            print(
+                f"{self.command}: {self.n} stages in {clock(time.perf_counter() - self.start)}",
+                file=sys.stderr,
+                flush=True,
+            )
+
+
+def clock(seconds: float) -> str:
+    """``12 s``, ``3 min 05 s``."""
+    m, s = divmod(int(round(seconds)), 60)
+    return f"{m} min {s:02d} s" if m else f"{s} s"

@@ -61,6 +61,7 @@ from pathlib import Path
 from ..api.notices import compile_notices
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
+from ..api.progress import Stages
 from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import report as report_cli
 from . import run as run_cli
@@ -396,8 +397,10 @@ def _cmd_generate(args: argparse.Namespace) -> int:
                 "--target c writes a C library into a directory: slipmaps generate --target c DIR"
             )
         writable_dir("DIR", args.dir)
-        for path in _derive_module("ctarget").write(args.dir):
+        stages = Stages(3, "slipmaps generate")  # derive (12 s), translate (20 s), write
+        for path in _derive_module("ctarget").write(args.dir, stage=stages, show=None):
             print(f"wrote {path}")
+        stages.done()
         return 0
     if args.dir is not None:
         raise ValueError(f"{args.dir}: an output directory is for --target c (generated/ has its place)")
