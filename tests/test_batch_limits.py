@@ -111,6 +111,16 @@ def test_a_batch_that_fits_is_not_refused_and_a_small_one_reads_nothing(monkeypa
     assert call.check_memory("apex_return", 10**9) > memory.SMALL  # 224 GB < 1 TB: allowed
 
 
+def test_a_batch_of_few_rows_needs_less_than_the_check_would_look_at():
+    """memory.FEW_ROWS rows of any role kernel stay below memory.SMALL: such a batch skips the
+    estimate (measured: the widest row, geyer-vs's apex-return Jacobian, 1,112 bytes)."""
+    from slipmaps.runtime.api import index
+    from slipmaps.runtime.api.calls import row_bytes
+
+    widest = max(row_bytes(s) for m in (*index.maps(), *index.halves()) for s in m.kernels.values())
+    assert 1000 < widest and memory.FEW_ROWS * widest < memory.SMALL, widest
+
+
 def test_runs_and_viability_share_the_check():
     """One estimator of the machine's memory and one message (runtime/api/memory.py): a run and a
     viability grid refused against the same ``available``."""

@@ -19,8 +19,8 @@ __all__ = ["FEW_ROWS", "SMALL", "available", "check"]
 #: scalar call's few times; no machine that runs numba lacks 64 MB).
 SMALL = 64 * 2**20
 #: A batch of at most this many rows needs less than :data:`SMALL` whatever its kernel (the widest
-#: row, the exact map's Jacobian, takes 1.3 kB; a test checks every role), so it is not estimated:
-#: a batch of a few rows costs what a scalar call does.
+#: row, geyer-vs's apex-return Jacobian, takes 1,112 bytes; a test checks every role), so it is not
+#: estimated: a batch of a few rows costs what a scalar call does.
 FEW_ROWS = 16_384
 
 
