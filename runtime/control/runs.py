@@ -54,7 +54,6 @@ from __future__ import annotations
 
 import difflib
 import math
-import os
 import time
 from dataclasses import dataclass, fields
 from pathlib import Path
@@ -62,6 +61,7 @@ from pathlib import Path
 import numpy as np
 from slipmaps.generated.status import Status
 
+from ..api import memory
 from ..api.frames import flat_columns, status_columns, to_pandas
 from ..api.index import get
 from ..api.names import RUN_RENAMED, RenamedKeys, warn_renamed
@@ -206,32 +206,13 @@ def memory_estimate(runs: int, steps: int) -> int:
     return int(runs) * int(steps) * per + int(steps) * _SCENARIO_BYTES_PER_STEP
 
 
-def _machine_memory() -> int | None:
-    """The machine's available memory in bytes (MemAvailable, else the physical memory), or None."""
-    try:
-        with open("/proc/meminfo") as f:
-            for line in f:
-                if line.startswith("MemAvailable:"):
-                    return int(line.split()[1]) * 1024
-    except (OSError, ValueError, IndexError):
-        pass
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
-    except (ValueError, OSError, AttributeError):
-        return None
-
-
 def check_memory(runs: int, steps: int, available: int | None = None) -> int:
     """The estimate of :func:`memory_estimate`; ValueError (one line with the estimate) when it
-    exceeds ``available`` bytes (default: the machine's available memory)."""
-    need = memory_estimate(runs, steps)
-    have = _machine_memory() if available is None else available
-    if have is not None and need > have:
-        raise ValueError(
-            f"{runs} run(s) of {steps} steps need about {need / 1e9:.3g} GB of memory, more than the "
-            f"{have / 1e9:.3g} GB available: run fewer steps"
-        )
-    return need
+    exceeds ``available`` bytes (default: the machine's available memory;
+    :func:`slipmaps.runtime.api.memory.check`)."""
+    return memory.check(
+        memory_estimate(runs, steps), f"{runs} run(s) of {steps} steps need", "run fewer steps", available
+    )
 
 
 @dataclass

@@ -65,6 +65,7 @@ _EXPORTS = {
     "RobustSet": "slipmaps.runtime.analysis.viability_robust",
     "Result": "slipmaps.runtime.api.results",
     "BatchResult": "slipmaps.runtime.api.results",
+    "BatchInterrupted": "slipmaps.runtime.api.batch",
     "Status": "slipmaps.generated.status",
     "Sweep": "slipmaps.runtime.sweep.run",
     "sweep": "slipmaps.runtime.sweep.run",
@@ -90,6 +91,7 @@ _EXPORTS = {
     "Hops": "slipmaps.runtime.control.identify",
     "RaibertGains": "slipmaps.runtime.control.raibert",
     "load_scenario": "slipmaps.runtime.control.scenarios",
+    "notices": "slipmaps.runtime.api.notices",
 }
 
 __all__ = sorted(_EXPORTS)
