@@ -583,7 +583,7 @@ def _correction(sc: Scenario, n: int, idx: np.ndarray, values: dict) -> tuple[np
     level = np.abs(ground - before)[:, past] <= sc.correction_gate
     out = []
     for key in ("height", "speed"):
-        r = values[f"next_{key}"][idx, past] - values[f"predicted_{key}"][idx, past]
+        r = values[f"next_apex_{key}"][idx, past] - values[f"predicted_{key}"][idx, past]
         use = level & np.isfinite(r)
         count = use.sum(axis=1)
         total = np.where(use, r, 0.0).sum(axis=1)
@@ -692,7 +692,8 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
         th = np.where(failed, start, res["touchdown_angle"])
         kc = np.where(failed, p.k_c, res["k_c"])
         kd = np.where(failed, p.k_d, res["k_d"])
-        pred_h, pred_v, resid = res["next_apex_height"] + dh, res["next_apex_speed"] + dv, res["residual"]
+        # the model's own prediction at the controls it chose (for the corrected aim, when corrected)
+        pred_h, pred_v, resid = res["next_apex_height"], res["next_apex_speed"], res["residual"]
         elo, ehi = res["energy_low"], res["energy_high"]
         authority[idx] = np.where(np.isfinite(res["authority"]), res["authority"], authority[idx])
         solve = res["solve_us"]
