@@ -24,7 +24,6 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..api.paths import writable_dir
 from ..api.progress import Stages
 
 __all__ = ["QUICK_MAPS", "add_parser", "run"]
@@ -52,16 +51,9 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _out(args: argparse.Namespace) -> Path:
-    from ..studies.checkout import docs_dir
+    from .args import docs_out
 
-    if args.out is not None:
-        return writable_dir("--out", args.out)
-    if args.quick:
-        raise ValueError("--quick writes a reduced report: give --out DIR (never docs/)")
-    docs = docs_dir()
-    if docs is None:
-        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
-    return docs
+    return docs_out(args.out, args.quick)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -14,8 +14,6 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from ..api.paths import writable_dir
-
 __all__ = ["add_parser", "run"]
 
 
@@ -38,16 +36,9 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _out(args: argparse.Namespace) -> Path:
-    from ..studies.checkout import docs_dir
+    from .args import docs_out
 
-    if args.out is not None:
-        return writable_dir("--out", args.out)
-    if args.quick:
-        raise ValueError("--quick writes a small study: give --out DIR (never docs/)")
-    docs = docs_dir()
-    if docs is None:
-        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
-    return docs
+    return docs_out(args.out, args.quick)
 
 
 def run(args: argparse.Namespace) -> int:
