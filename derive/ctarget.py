@@ -450,9 +450,12 @@ def _n_values(kernel: Kernel) -> int:
     return next((i for i, n in enumerate(names) if n.startswith("d_") and "__" in n), len(names))
 
 
-def build(modules) -> dict[str, str]:
+def build(modules, show: bool | None = False) -> dict[str, str]:
     """The C library's files {file name: content} for the kernel modules ``modules`` (callees
-    first, :func:`.generate.modules`)."""
+    first, :func:`.generate.modules`); ``show``: a progress bar over the kernels translated, on
+    standard error (:class:`slipmaps.runtime.api.progress.Bar`; None: on a terminal after a second)."""
+    from slipmaps.runtime.api.progress import Bar
+
     roles, order = exported(modules)
     kinds: dict[str, str] = {}
     for k in order:
@@ -460,7 +463,7 @@ def build(modules) -> dict[str, str]:
         kinds["#n:" + k.name] = len(k.output_names) + (1 if k.status else 0)
     tables: dict[str, tuple[str, str, str]] = {}
     functions = []
-    for k in order:
+    for k in Bar(len(order), "translating the kernels to C", show, unit="kernels").count(order):
         data = lower(k)
         shapes = {}
         for name, values in data["tables"].items():
@@ -564,13 +567,20 @@ def build(modules) -> dict[str, str]:
     }
 
 
-def write(directory: Path) -> list[Path]:
-    """Write the C library into ``directory`` (created if missing); the paths written."""
+def write(directory: Path, stage=None, show: bool | None = False) -> list[Path]:
+    """Write the C library into ``directory`` (created if missing); the paths written. ``stage``
+    (``stage(what)``) is told each stage as it starts (deriving the kernels, about 12 s on a 2-core
+    EPYC; translating them, 20 s; writing), ``show`` draws a bar over the kernels (:func:`build`)."""
     from .generate import modules
 
+    say = stage if stage is not None else (lambda what: None)
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
-    files = build(modules())
+    say("deriving the kernel modules from derive/ (SymPy)")
+    derived = modules()
+    say("translating the kernels to C")
+    files = build(derived, show)
+    say(f"writing the C library into {directory}")
     written = []
     for name, text in files.items():
         path = directory / name

@@ -575,3 +575,32 @@ def test_every_figure_is_saved_through_the_one_helper():
         if ".savefig(" in path.read_text()
     ]
     assert calls == ["runtime/api/paths.py"]
+
+
+def test_the_step_to_step_correction_removes_a_steady_model_error():
+    """A plant 5 % heavier than the model misses every target by 18.1 mm and 35.4 mm/s; with the
+    correction of the last three steps the misses fall below 0.1 mm and 0.2 mm/s from the eighth
+    step on (measured: 0.02 mm, 0.0 mm/s)."""
+    sc = slipmaps.Scenario(steps=12, start_height=1.0, start_speed=5.0, mismatch_mass=0.05, known=1)
+    dh0, dv0 = slipmaps.run(sc).errors()
+    dh, dv = slipmaps.run(sc.with_(correction=3)).errors()
+    assert np.abs(dh0[4:]).min() > 0.015 and np.abs(dv0[4:]).min() > 0.03
+    assert np.abs(dh[7:]).max() < 1e-4 and np.abs(dv[7:]).max() < 2e-4
+
+
+def test_the_correction_leaves_out_steps_whose_ground_changed():
+    """The mean residual of the last steps whose touchdown ground changed by at most the gate."""
+    from slipmaps.runtime.control.runs import _correction
+
+    values = {
+        "ground": np.array([[0.0, 0.0, 0.05, 0.05, 0.05]]),
+        "next_apex_height": np.array([[1.01, 1.02, 1.50, 1.04, 0.0]]),
+        "predicted_height": np.ones((1, 5)),
+        "next_apex_speed": np.array([[5.1, 5.2, 9.0, 5.4, 0.0]]),
+        "predicted_speed": np.full((1, 5), 5.0),
+    }
+    sc = slipmaps.Scenario(steps=5, correction=3, correction_gate=0.01)
+    dh, dv = _correction(sc, 4, np.array([0]), values)
+    # steps 1..3: step 2's ground rose 5 cm (left out); steps 1 and 3 averaged
+    assert dh[0] == pytest.approx(0.03) and dv[0] == pytest.approx(0.3)
+    assert _correction(sc.with_(correction=0), 4, np.array([0]), values)[0][0] == 0.0

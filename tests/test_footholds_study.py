@@ -66,7 +66,7 @@ def test_a_familys_courses_are_seeded_apart():
 @pytest.mark.parametrize(
     ("flags", "words"),
     [
-        (["--quick"], "--quick writes a small study: give --out DIR"),
+        (["--quick"], "--quick writes a reduced study: give --out DIR"),
         (["--jobs", "0"], "--jobs must be at least 1"),
     ],
 )

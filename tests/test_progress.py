@@ -1,6 +1,7 @@
-"""Progress where work is long (issue 32, item 4): numba compiling a kernel on its first use is a
-line on a terminal's standard error, and ``slipmaps report`` says which stage it runs, of how many;
-nothing of either when standard error is piped."""
+"""Progress where work is long (issue 32, item 4; issue 52, item 3): numba compiling a kernel on
+its first call is a line on standard error, from the Python API (silenced by ``slipmaps.notices``
+or ``SLIPMAPS_NOTICES=0``) and, on a terminal only, from the command line; ``slipmaps report``
+says which stage it runs, of how many."""
 
 from __future__ import annotations
 
@@ -13,8 +14,9 @@ import sys
 from pathlib import Path
 
 import pytest
-from slipmaps.runtime.api import progress
-from slipmaps.runtime.api.progress import compile_notices, compiling_what
+import slipmaps
+from slipmaps.runtime.api import notices
+from slipmaps.runtime.api.notices import compile_notices, compiling_what
 from slipmaps.runtime.cli import app
 from slipmaps.runtime.cli.app import main
 
@@ -30,12 +32,13 @@ class Terminal(io.StringIO):
 
 def _fresh_kernel(tmp_path: Path, name: str, cache: bool):
     """A numba function never compiled before: a new module file under ``tmp_path`` (numba's own
-    cache folder beside it when ``cache``), imported under a new name."""
+    cache folder beside it when ``cache``), imported under a new name inside the package
+    ``slipmaps`` (the notices announce slipmaps' own code only)."""
     path = tmp_path / f"{name}.py"
     if not path.exists():
         deco = "njit(cache=True)" if cache else "njit"
         path.write_text(f"from numba import njit\n\n\n@{deco}\ndef {name}(x):\n    return 2.0 * x + 1.0\n")
-    spec = importlib.util.spec_from_file_location(f"{name}_{len(list(tmp_path.iterdir()))}", path)
+    spec = importlib.util.spec_from_file_location(f"slipmaps.{name}_{len(list(tmp_path.iterdir()))}", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return getattr(module, name)
@@ -50,7 +53,7 @@ def test_a_compile_is_one_line_on_a_terminal_with_its_seconds(tmp_path):
     # one line, redrawn in place (\r) while it compiles, ended with the time it took
     assert text.count("\n") == 1 and text.endswith(" s\n"), repr(text)
     last = text.rstrip("\n").split("\r")[-1]
-    line = r"slipmaps: compiling \S*kernel_tty \(once per process\) \.\.\. \d+\.\d s"
+    line = r"compiling slipmaps' \S*kernel_tty \(first call in this process\) \.\.\. \d+\.\d s"
     assert re.fullmatch(line, last), last
 
 
@@ -71,7 +74,7 @@ def test_a_kernel_loaded_from_the_cache_says_nothing(tmp_path, monkeypatch):
     stream = Terminal()
     with compile_notices(stream, delay=0):
         assert _fresh_kernel(tmp_path, "kernel_cached", cache=True)(1.0) == 3.0
-    assert "kernel_cached (first use; cached for the next runs)" in stream.getvalue()
+    assert "kernel_cached (first call; cached afterwards)" in stream.getvalue()
     again = Terminal()
     with compile_notices(again, delay=0):
         assert _fresh_kernel(tmp_path, "kernel_cached", cache=True)(2.0) == 5.0
@@ -86,10 +89,87 @@ def test_a_short_compile_says_nothing(tmp_path):
     assert stream.getvalue() == ""
 
 
-def test_a_generated_kernel_is_named_by_its_file():
-    from slipmaps.generated import geyer
+@pytest.fixture
+def api_notices(monkeypatch, capsys):
+    """The process's notices as the Python API has them by default (always, on standard error),
+    shown however short the compile; standard error a plain stream (capsys's: as a file or a
+    notebook's), whose text ``api_notices()`` gives."""
+    monkeypatch.setattr(notices.NOTICES, "enabled", True)
+    monkeypatch.setattr(notices, "NOTICE_DELAY", 0.0)
+    notices.install()
+    return lambda: capsys.readouterr().err
 
-    assert compiling_what(geyer.geyer_stance) == "geyer_stance of generated/geyer.py"
+
+def test_a_first_call_from_python_is_one_line_on_standard_error(api_notices, tmp_path):
+    """Not only on a terminal: a script's log or a notebook gets the line too, once, as it is."""
+    assert _fresh_kernel(tmp_path, "kernel_api", cache=False)(1.0) == 3.0
+    line = r"compiling slipmaps' \S*kernel_api \(first call in this process\) \.\.\.\n"
+    assert re.fullmatch(line, api_notices())
+
+
+def test_notices_false_silences_them_and_returns_the_setting_before(api_notices, tmp_path):
+    assert slipmaps.notices(False) is True
+    try:
+        assert _fresh_kernel(tmp_path, "kernel_quiet", cache=False)(1.0) == 3.0
+    finally:
+        assert slipmaps.notices(True) is False
+    assert api_notices() == ""
+    with pytest.raises(ValueError, match="notices takes True, False or None"):
+        slipmaps.notices("no")
+
+
+def test_numba_code_outside_slipmaps_is_not_announced(api_notices):
+    from numba import njit
+
+    @njit
+    def theirs(x):
+        return x + 1.0
+
+    assert theirs(1.0) == 2.0
+    assert api_notices() == ""
+
+
+@pytest.mark.parametrize(("value", "enabled"), [("0", False), ("terminal", None), ("", True), ("1", True)])
+def test_the_environment_variable_sets_the_default(value, enabled, monkeypatch):
+    monkeypatch.setenv(notices.NOTICES_ENV, value)
+    assert notices._from_environment() is enabled
+
+
+#: A first public call in a fresh process, every compile announced however short.
+FIRST_CALL = (
+    "from slipmaps.runtime.api import notices\n"
+    "notices.NOTICE_DELAY = 0.0\n"
+    "import slipmaps\n"
+    "assert slipmaps.apex_return('geyer', slipmaps.HUMAN_RUNNER, 1.0, 5.0, 0.35).ok\n"
+)
+
+
+@pytest.mark.slow  # geyer's kernels compiled on an empty cache: 3-8 s
+def test_a_first_call_says_what_compiles_and_a_kernel_in_the_cache_says_nothing(tmp_path):
+    """Issue 52: a first call on an empty cache (piped standard error: the API's notices do not
+    need a terminal) names the map and the role; the next process loads the kernel from numba's
+    disk cache, which numba's compile event never fires for: nothing."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("NUMBA_", "SLIPMAPS_NOTICES"))}
+    env["NUMBA_CACHE_DIR"] = str(tmp_path / "cache")
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", FIRST_CALL], env=env, capture_output=True, text=True, timeout=600
+        )
+        for _ in range(2)
+    ]
+    assert all(r.returncode == 0 for r in runs), runs[-1].stderr[-2000:]
+    assert runs[0].stderr == "compiling slipmaps' geyer apex_return (first call; cached afterwards) ...\n"
+    assert runs[1].stderr == ""
+
+
+def test_a_role_kernel_is_named_by_its_map_and_role_another_by_its_file():
+    from slipmaps.generated import exact_jacobian, geyer, iterative
+
+    assert compiling_what(exact_jacobian.exact_apex_return_jacobian) == "slipmaps' exact apex_return_jacobian"
+    assert compiling_what(geyer.geyer_stance_rows) == "slipmaps' geyer stance, batch"
+    assert compiling_what(iterative.iterative_stance_zeroth_geyer) == "slipmaps' iterative stance"  # default
+    assert compiling_what(iterative.iterative_stance_zeroth_held) == "slipmaps' iterative stance (held)"
+    assert compiling_what(geyer.geyer_solution) == "slipmaps' geyer_solution of generated/geyer.py"
 
 
 @pytest.mark.parametrize("no_progress", [False, True])
@@ -102,12 +182,12 @@ def test_every_command_runs_with_the_notices(no_progress, tmp_path, monkeypatch)
         return 0 if kernel(1.0) == 3.0 else 1
 
     monkeypatch.setattr(app.report_cli, "run", compiles)
-    monkeypatch.setattr(progress, "NOTICE_DELAY", 0.0)
+    monkeypatch.setattr(notices, "NOTICE_DELAY", 0.0)
     terminal = Terminal()
     monkeypatch.setattr(sys, "stderr", terminal)
     argv = ["report", "--render-only"] + (["--no-progress"] if no_progress else [])
     assert main(argv) == 0
-    shown = "slipmaps: compiling" in terminal.getvalue()
+    shown = "compiling slipmaps'" in terminal.getvalue()
     assert shown is not no_progress, terminal.getvalue()
 
 
@@ -115,9 +195,9 @@ def test_every_command_runs_with_the_notices(no_progress, tmp_path, monkeypatch)
 #: geyer's kernels in less than the default second).
 EVERY_COMPILE = (
     "import sys\n"
-    "from slipmaps.runtime.api import progress\n"
+    "from slipmaps.runtime.api import notices\n"
     "from slipmaps.runtime.cli import main\n"
-    "progress.NOTICE_DELAY = 0.0\n"
+    "notices.NOTICE_DELAY = 0.0\n"
     "sys.exit(main(sys.argv[1:]))\n"
 )
 
@@ -156,7 +236,7 @@ def test_a_first_command_on_an_empty_cache_shows_what_compiles_on_a_terminal_onl
             os.close(secondary)
     assert done.returncode == 0
     terminal = b"".join(chunks).decode()
-    line = r"slipmaps: compiling geyer_\w+ of generated/geyer\.py \(first use; cached for the next runs\)"
+    line = r"compiling slipmaps' geyer \w+(, batch)? \(first call; cached afterwards\)"
     assert re.search(line, terminal), terminal
     assert b"compiling" not in done.stdout
     piped = _slipmaps(argv, tmp_path / "cold-pipe", subprocess.PIPE)
@@ -222,3 +302,17 @@ def test_report_piped_is_one_plain_line_per_stage(report_stages, capsys):
     n = len(ran)
     assert err.splitlines() == [f"slipmaps report: [{i}/{n}] {what}" for i, what in enumerate(ran, 1)]
     assert "\r" not in err
+
+
+def test_a_bar_counts_the_items_of_a_loop_and_closes_after_the_last():
+    from slipmaps.runtime.api.progress import Bar
+
+    stream = Terminal()
+    sys_stderr, sys.stderr = sys.stderr, stream
+    try:
+        assert list(Bar(3, "kernels", True, unit="kernels").count("abc")) == ["a", "b", "c"]
+    finally:
+        sys.stderr = sys_stderr
+    text = stream.getvalue()
+    assert text.rstrip("\n").split("\r")[-1].startswith("kernels: [########################] 3/3 kernels")
+    assert text.endswith("\n") and text.count("\n") == 1

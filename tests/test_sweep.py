@@ -346,3 +346,73 @@ def test_cli_a_huge_sweep_states_its_estimate_and_needs_yes(tmp_path, capsys, mo
 
     monkeypatch.setattr(sweep_run, "sweep", interrupted)
     assert main([*argv, "--yes"]) == 130 and len(ran) == 1
+
+
+# --- the scheduler's form, checked before it is tried (issue 52, item 3) ---------------------------
+
+
+@pytest.mark.parametrize(
+    "given",
+    [
+        "bogus:9",
+        "host:8786",
+        "tcp://host",
+        "tcp://:8786",
+        "tcp://host:0",
+        "tcp://host:99999",
+        "udp://host:1",
+        "x",
+    ],
+)
+def test_a_scheduler_in_no_documented_form_is_refused_before_it_is_tried(given, monkeypatch):
+    """`--scheduler bogus:9` was tried as an address for 30 s; any string but the documented forms
+    is one line naming them, and nothing connects."""
+    import distributed
+    from slipmaps.runtime.sweep.schedulers import check_scheduler
+
+    monkeypatch.setattr(distributed, "Client", lambda *a, **k: pytest.fail("an address was tried"))
+    with pytest.raises(ValueError) as info:
+        check_scheduler(given)
+    message = str(info.value)
+    assert message == (
+        "scheduler must be 'inprocess', 'local:N' (N workers on this machine) or a Dask scheduler's "
+        f"address tcp://HOST:PORT, got {given!r}"
+    )
+
+
+@pytest.mark.parametrize(
+    "given", ["inprocess", None, "local:2", "tcp://10.0.0.5:8786", "tls://host:8786", "tcp://[::1]:8786"]
+)
+def test_the_documented_scheduler_forms_pass_the_check(given):
+    from slipmaps.runtime.sweep.schedulers import check_scheduler
+
+    assert check_scheduler(given) == (None if given == "inprocess" else given)
+
+
+def test_sweep_refuses_a_bogus_scheduler_naming_the_flag_exit_2(tmp_path, capsys):
+    out = tmp_path / "out"
+    assert main(["sweep", str(EXAMPLE), "--scheduler", "bogus:9", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert (
+        err.startswith("slipmaps sweep: error: --scheduler must be 'inprocess', 'local:N'")
+        and err.count("\n") == 1
+    )
+    assert "got 'bogus:9'" in err and not (out / "chunks").exists()
+
+
+def test_reaching_a_scheduler_says_so_first(monkeypatch, capsys):
+    """Reaching an address can take up to 30 s: a line on standard error says what is waited for."""
+    import distributed
+    from slipmaps.runtime.sweep import schedulers
+
+    class Unreachable:
+        def __init__(self, address, timeout):
+            raise OSError(f"Timed out trying to connect to {address} after {timeout}")
+
+    monkeypatch.setattr(distributed, "Client", Unreachable)
+    with pytest.raises(ValueError, match="cannot reach the dask scheduler at tcp://10.0.0.5:8786"):
+        with schedulers._client("tcp://10.0.0.5:8786"):
+            pass
+    err = capsys.readouterr().err
+    wait = f"up to {schedulers.CONNECT_SECONDS} s"
+    assert err == f"slipmaps: connecting to the Dask scheduler at tcp://10.0.0.5:8786 ({wait})\n"

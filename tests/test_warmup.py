@@ -1,9 +1,11 @@
-"""The suite's warm-up of numba's cache (tests/warmup.py, tests/conftest.py; issue 32, item 7): it
-compiles what the API calls, and runs for the whole suite in the controller only."""
+"""The warm-up of numba's cache: ``slipmaps warmup`` (runtime/control/warmup.py; issue 52, item 3)
+and the suite's (tests/warmup.py, tests/conftest.py; issue 32, item 7), one mechanism: it compiles
+what the API calls, on every core, and runs for the whole suite in the controller only."""
 
 from __future__ import annotations
 
 import os
+import sys
 from types import SimpleNamespace
 
 import conftest
@@ -13,6 +15,7 @@ import pytest
 import slipmaps
 import warmup
 from slipmaps.runtime.api import index, model
+from slipmaps.runtime.control import warmup as api_warmup
 
 P = slipmaps.HUMAN_RUNNER
 
@@ -38,7 +41,7 @@ def test_the_warm_up_compiles_the_signatures_the_api_calls():
     specs = [geyer["apex_return"], geyer["apex_return_jacobian"], index.model_kernels()["stance_energy"]]
     checked = 0
     for spec in specs:
-        for function, types in warmup.signatures(spec):
+        for function, types in api_warmup.signatures(spec):
             if function.signatures:  # called above (a model kernel's batch form was not)
                 assert types in function.signatures, (function, types, function.signatures)
                 checked += 1
@@ -46,7 +49,7 @@ def test_the_warm_up_compiles_the_signatures_the_api_calls():
 
 
 def test_every_role_kernel_at_its_defaults_is_warmed():
-    specs = warmup.role_specs()
+    specs = api_warmup.role_specs()
     names = {(s.module, s.name) for kernels in specs.values() for s in kernels}
     for m in (*index.maps(), *index.halves()):
         for spec in m.kernels.values():
@@ -93,7 +96,7 @@ def test_the_kernels_the_solver_binds_are_warmed_under_its_key():
     geyer, half = index.get("geyer").kernels, index.get_half("exact-decompression").kernels
     assert {geyer["apex_return"].name, geyer["apex_return_jacobian"].name, half["apex"].name} <= set(bound)
     for types in bound.values():
-        assert warmup.solver_signature(types) == compiled.MODEL.signature
+        assert api_warmup.solver_signature(types) == compiled.MODEL.signature
 
 
 def _config(args, numprocesses=None, collectonly=False):
@@ -127,10 +130,10 @@ def test_the_warm_up_runs_for_the_whole_suite_in_the_controller(
 
 
 def test_a_warm_cache_starts_nothing(monkeypatch):
-    monkeypatch.setattr(warmup, "cold_jobs", lambda: [])
-    monkeypatch.setattr(warmup, "_drive", lambda *a: pytest.fail("a warm-up process started"))
+    monkeypatch.setattr(api_warmup, "cold_jobs", lambda *a, **k: [])
+    monkeypatch.setattr(api_warmup, "_drive", lambda *a: pytest.fail("a warm-up process started"))
     said = []
-    assert warmup.warm(2, say=said.append) == 0.0
+    assert warmup.warm(2, say=said.append) == api_warmup.Warmed(jobs=0, seconds=0.0)
     assert said == []
 
 
@@ -139,7 +142,7 @@ def test_kernel_jobs_start_after_every_module_job_has_finished():
     one of them has finished (not only been taken), so its callees load from the cache."""
     import threading
 
-    phases = warmup.Phases(["control", "exact", "iterative:a", "geyer", "iterative:b"])
+    phases = api_warmup.Phases(["control", "exact", "iterative:a", "geyer", "iterative:b"])
     assert [phases.take(), phases.take(), phases.take()] == ["control", "exact", "geyer"]
     got: list = []
     waiting = threading.Thread(target=lambda: got.append(phases.take()))
@@ -153,3 +156,87 @@ def test_kernel_jobs_start_after_every_module_job_has_finished():
     assert got == ["iterative:a"]
     phases.finished("iterative:a")
     assert [phases.take(), phases.take()] == ["iterative:b", None]
+
+
+# --- slipmaps warmup: the command, the suite's warm-up, one mechanism -------------------------------
+
+#: A warm-up subprocess that compiles nothing: each job done at once, but "bad", which fails.
+FAKE_WORKER = (
+    "import sys\n"
+    "for line in sys.stdin:\n"
+    "    job = line.strip()\n"
+    "    if job == 'bad':\n"
+    "        print('bad: RuntimeError: no such kernel', file=sys.stderr, flush=True)\n"
+    "        print('failed bad', flush=True)\n"
+    "    else:\n"
+    "        print('done', job, '0.0', flush=True)\n"
+)
+
+
+def test_the_suite_and_the_command_share_one_warm_up(monkeypatch):
+    """tests/warmup.py adds its jobs and its subprocess to ``slipmaps warmup``'s mechanism
+    (runtime/control/warmup.py), which the command runs for the maps it is given."""
+    from slipmaps.runtime.cli.app import main
+
+    calls = []
+    monkeypatch.setattr(api_warmup, "warm", lambda *a, **k: calls.append((a, k)) or api_warmup.Warmed())
+    warmup.warm(2)
+    (processes,), kwargs = calls[0]
+    assert (
+        processes == 2
+        and kwargs["table"] is warmup.jobs()
+        and kwargs["command"][1].endswith("tests/warmup.py")
+    )
+    assert main(["warmup", "geyer", "exact-compression", "--processes", "1", "--no-progress"]) == 0
+    assert calls[1][0] == (1, ["geyer", "exact-compression"]) and calls[1][1]["progress"] is False
+
+
+def test_the_warm_up_counts_its_jobs_on_a_bar_and_names_a_failed_one(monkeypatch, capsys):
+    monkeypatch.setattr(api_warmup, "cold_jobs", lambda *a, **k: ["control", "geyer", "bad", "geyer:x_rows"])
+    said = []
+    done = api_warmup.warm(
+        2, table={}, command=[sys.executable, "-c", FAKE_WORKER], say=said.append, progress=True
+    )
+    assert done.jobs == 4 and done.failed == ("bad: bad: RuntimeError: no such kernel",)
+    err = capsys.readouterr().err
+    assert "compiling slipmaps' kernels: [" in err and "4/4 jobs" in err and err.endswith("\n")
+    assert said[0] == "warming numba's cache (empty or stale): 4 jobs in 2 processes"
+    assert "not compiled (later calls compile them): bad: bad: RuntimeError: no such kernel" in said[1]
+
+
+def test_warmup_with_maps_warms_those_maps_kernels_only():
+    jobs = api_warmup.jobs(["geyer"])
+    assert {job.split(":")[0] for job in jobs} == {"geyer", "geyer_jacobian"}
+    assert "geyer_jacobian:geyer_apex_return_jacobian_rows" in jobs  # the Jacobian batch's own job
+    assert all(
+        f.py_func.__module__.startswith("slipmaps.generated.geyer") for w in jobs.values() for f, *_ in w
+    )
+    everything = api_warmup.jobs()
+    assert "model" in everything and set(jobs) < set(everything)
+
+
+@pytest.mark.parametrize(
+    ("argv", "says"),
+    [
+        (["warmup", "nope"], "MAP: unknown map 'nope'; the maps are geyer, "),
+        (["warmup", "--processes", "0"], "--processes must be a positive number of processes, got 0"),
+    ],
+)
+def test_warmup_refuses_a_bad_argument_in_one_line(argv, says, capsys, monkeypatch):
+    from slipmaps.runtime.cli.app import main
+
+    monkeypatch.setattr(api_warmup, "warm", lambda *a, **k: pytest.fail("the warm-up started"))
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"slipmaps warmup: error: {says}") and err.count("\n") == 1, err
+
+
+def test_warmup_on_a_warm_cache_says_so_and_starts_nothing(capsys, monkeypatch):
+    from slipmaps.runtime.cli.app import main
+
+    monkeypatch.setattr(api_warmup, "cold_jobs", lambda *a, **k: [])
+    monkeypatch.setattr(api_warmup, "_drive", lambda *a: pytest.fail("a warm-up process started"))
+    assert main(["warmup"]) == 0
+    assert (
+        capsys.readouterr().out == "numba's cache already holds every kernel asked for: nothing to compile\n"
+    )

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from slipmaps.generated.status import Status
 
+from ..api import memory
 from ..api.maps import apex_return_batch
 from ..api.params import SlipParams
 from ..api.progress import Bar
@@ -72,22 +73,10 @@ def check_memory(grids: Grids, available: int | None = None) -> int:
     """The bytes a study of ``grids`` holds (per pair: ``failed``, ``status``, ``viable`` and a
     temporary, 1 byte each, the cell index, 4, the next state, 8 per state dimension; and one batch
     call's chunk); ValueError (one line with the estimate) when it exceeds ``available`` (default:
-    the machine's available memory)."""
-    import os
-
+    the machine's available memory: :func:`slipmaps.runtime.api.memory.check`)."""
     pairs = int(np.prod(grids.state_shape)) * int(np.prod(grids.action_shape))
     need = pairs * (8 + 8 * len(grids.states)) + CHUNK_ROWS * 8 * 24
-    if available is None:
-        try:
-            available = os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
-        except (ValueError, OSError, AttributeError):
-            return need
-    if need > available:
-        raise ValueError(
-            f"the grid's {pairs:,} state-action pairs need about {need / 1e9:.3g} GB of memory, more than "
-            f"the {available / 1e9:.3g} GB available: use coarser grids"
-        )
-    return need
+    return memory.check(need, f"the grid's {pairs:,} state-action pairs need", "use coarser grids", available)
 
 
 def speeds_on_energy(params: SlipParams, energy: float, heights: np.ndarray) -> np.ndarray:

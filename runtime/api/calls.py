@@ -34,17 +34,25 @@ from typing import Protocol
 import numpy as np
 from slipmaps.generated.status import Status
 
-from .batch import run_rows
+from . import memory
+from .batch import BatchInterrupted, run_rows
 from .index import MapInfo, get, get_half
 from .params import SlipParams
 
-__all__ = ["Backend", "Call", "KernelBackend", "KERNELS", "column_count"]
+__all__ = ["Backend", "Call", "KernelBackend", "KERNELS", "column_count", "row_bytes"]
 
 
 def column_count(call: Call, role: str) -> int:
     """The number of columns a role's batch writes: its outputs, and for a Jacobian d output /
     d input for every (output, input) pair after them."""
     return call.spec(role).width
+
+
+def row_bytes(spec) -> int:
+    """The bytes a batch of a role kernel allocates per row, at most: its outputs (a Jacobian's
+    derivatives included) and its status, its input row, and a copy of each input (an input
+    broadcast against the others is copied to one value per row)."""
+    return 8 * (spec.width + 1 + 2 * len(spec.x))
 
 
 class Backend(Protocol):
@@ -59,7 +67,9 @@ class Backend(Protocol):
         self, call: Call, role: str, rows: Mapping[str, np.ndarray], inputs: Mapping[str, float], n: int, show
     ) -> tuple[np.ndarray, np.ndarray]:
         """``(out (n, columns), status (n,))`` over ``n`` rows: ``rows`` holds the per-row inputs
-        (1-D float arrays), ``inputs`` the per-call ones; ``show`` a progress bar (None: auto)."""
+        (1-D float arrays), ``inputs`` the per-call ones; ``show`` a progress bar (None: auto).
+        Ctrl-C: :class:`~.batch.BatchInterrupted` whose ``result`` is ``(out, status)`` of the
+        rows finished."""
 
 
 class KernelBackend:
@@ -82,12 +92,16 @@ class KernelBackend:
                 one[a] = x[0]
             status[0] = ScalarPlan.get(call, role).run(one, out[0])
             return out, status
-        run_rows(
-            kernel_functions(spec)[1],
-            *layout_rows(spec, call.record(spec, rows=True), rows, inputs, n),
-            out,
-            status,
-        )
+        try:
+            run_rows(
+                kernel_functions(spec)[1],
+                *layout_rows(spec, call.record(spec, rows=True), rows, inputs, n),
+                out,
+                status,
+            )
+        except BatchInterrupted as stop:
+            stop.result = (out[: stop.done], status[: stop.done])
+            raise
         return out, status
 
 
@@ -262,3 +276,39 @@ class Call:
         if n == 0:
             return np.empty((0, column_count(self, role))), np.empty(0, dtype=np.int64)
         return self.backend.rows(self, role, rows, inputs, n, show)
+
+    def check_memory(self, role: str, n: int) -> int:
+        """The bytes a batch of ``n`` rows of the role allocates (:func:`row_bytes`); ValueError,
+        one line with the estimate, when they exceed the machine's available memory
+        (:func:`.memory.check`)."""
+        need = n * row_bytes(self.spec(role))
+        if need < memory.SMALL:  # the message not even formatted: a small batch's call stays short
+            return need
+        return memory.check(
+            need,
+            f"a batch of {n:,} rows ({self.info.name} {role}) needs",
+            "give fewer rows, or split them into several batches",
+        )
+
+    def batch(self, role: str, rows, inputs, shape: tuple[int, ...], make, show=None, given=None):
+        """``make(call, role, out, status, shape, given)`` of the role over the rows of ``shape``
+        (:meth:`rows`; the caller checked their memory, :meth:`check_memory`, before copying any),
+        ``given`` the inputs by name (each broadcasting to ``shape``) the result carries. Ctrl-C:
+        :class:`~.batch.BatchInterrupted` whose ``result`` is ``make`` of the rows finished (shape
+        ``(done,)``, their inputs cut to those rows)."""
+        try:
+            out, status = self.rows(role, rows, inputs, math.prod(shape), show)
+        except BatchInterrupted as stop:
+            if stop.result is not None:
+                out, status = stop.result
+                done = stop.done
+                cut = None
+                if given is not None:
+                    flat = {
+                        k: np.broadcast_to(np.asarray(v, dtype=float), shape).reshape(-1)
+                        for k, v in given.items()
+                    }
+                    cut = {k: v[:done] for k, v in flat.items()}
+                stop.result = make(self, role, out, status, (done,), cut)
+            raise
+        return make(self, role, out, status, shape, given)

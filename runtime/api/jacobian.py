@@ -250,20 +250,20 @@ def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape, gi
 
 
 def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) -> JacobianBatch:
-    """:func:`stance_jacobian` over touchdown states of shape (n, 4), in parallel; a status per row."""
+    """:func:`stance_jacobian` over touchdown states of shape (n, 4), in parallel; a status per row.
+    Its memory need is checked first; Ctrl-C raises :class:`~slipmaps.BatchInterrupted` with the
+    rows finished."""
     call = Call.of(name, params, options)
-    arr = state_rows(params, touchdowns)
-    n = arr.shape[0]
+    arr = state_rows(params, touchdowns, call=call, role="stance_jacobian")
     td = Columns(arr, call.spec("stance_jacobian").x)
-    out, status = call.rows("stance_jacobian", td, {}, n)
-    return _batch(call, "stance_jacobian", out, status, (n,), td)
+    return call.batch("stance_jacobian", td, {}, arr.shape[:1], _batch, given=td)
 
 
 @apex_signature
 def apex_return_jacobian_batch(name: str, params: SlipParams, given: dict, **options) -> JacobianBatch:
     """:func:`apex_return_jacobian` over arrays (broadcast against each other), in parallel; a
-    status per row; the result has the broadcast shape."""
+    status per row; the result has the broadcast shape. Its memory need is checked before any row
+    is copied; Ctrl-C raises :class:`~slipmaps.BatchInterrupted` with the rows finished."""
     call = Call.of(name, params, options)
-    rows, inputs, shape = apex_rows(given)
-    out, status = call.rows("apex_return_jacobian", rows, inputs, math.prod(shape))
-    return _batch(call, "apex_return_jacobian", out, status, shape, given)
+    rows, inputs, shape = apex_rows(given, call, "apex_return_jacobian")
+    return call.batch("apex_return_jacobian", rows, inputs, shape, _batch, given=given)

@@ -36,6 +36,7 @@ import numpy as np
 from slipmaps.derive import params as _table
 from slipmaps.generated.status import MESSAGES, Status
 
+from . import memory
 from .calls import Call, Columns
 from .index import maps
 from .inputs import apex_signature
@@ -54,6 +55,7 @@ __all__ = [
     "half_stance_batch",
     "apex_inputs",
     "apex_rows",
+    "batch_result",
     "state_rows",
     "touchdown_inputs",
 ]
@@ -108,12 +110,16 @@ def apex_return(name: str, params: SlipParams, given: dict, **options) -> Result
     return _result(call, "apex_return", status, row, point, message)
 
 
-def state_rows(params: SlipParams, states, what: str = "touchdowns") -> np.ndarray:
+def state_rows(params: SlipParams, states, what: str = "touchdowns", call: Call | None = None, role=None):
     """(n, 4) float64 polar states (touchdown or bottom); leg lengths within round-off above l0 are
-    l0, as in :func:`stance` (the only copy made: when such a row exists)."""
+    l0, as in :func:`stance` (the only copy made: when such a row exists). With a ``call``, the
+    memory a batch of its ``role`` needs for those rows is checked first (``Call.check_memory``),
+    before any array of them is made."""
     arr = real_array(what, states)
     if arr.ndim != 2 or arr.shape[1] != 4:
         raise ValueError(f"{what} must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
+    if call is not None and arr.shape[0] > memory.FEW_ROWS:
+        call.check_memory(role, arr.shape[0])
     above = arr[:, 0] > params.l0
     if above.any():
         snap = above & (arr[:, 0] <= params.l0 * (1.0 + L0_SLACK))
@@ -123,24 +129,33 @@ def state_rows(params: SlipParams, states, what: str = "touchdowns") -> np.ndarr
     return arr
 
 
+def batch_result(
+    call: Call, role: str, out: np.ndarray, status: np.ndarray, shape, given=None
+) -> BatchResult:
+    """The :class:`~.results.BatchResult` of a role's rows (``Call.batch``'s ``make``), with the
+    inputs ``given`` (by name, broadcasting to ``shape``)."""
+    return BatchResult(call.info.name, role, call.spec(role).public_outputs, out, status, shape, given)
+
+
 def stance_batch(
     name: str, params: SlipParams, touchdowns, *, progress: bool | None = None, **options
 ) -> BatchResult:
-    """Map ``name`` over touchdown states of shape (n, 4); a status per row."""
+    """Map ``name`` over touchdown states of shape (n, 4); a status per row. Its memory need is
+    checked first; Ctrl-C raises :class:`~slipmaps.BatchInterrupted` with the rows finished."""
     call = Call.of(name, params, options)
-    arr = state_rows(params, touchdowns)
-    n = arr.shape[0]
+    arr = state_rows(params, touchdowns, call=call, role="stance")
     td = Columns(arr, call.spec("stance").x)
-    out, status = call.rows("stance", td, {}, n, progress)
-    names = call.spec("stance").public_outputs
-    return BatchResult(call.info.name, "stance", names, out, status, (n,), td)
+    return call.batch("stance", td, {}, arr.shape[:1], batch_result, progress, given=td)
 
 
-def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tuple[int, ...]]:
+def apex_rows(
+    given: dict, call: Call | None = None, role=None
+) -> tuple[dict, dict[str, float], tuple[int, ...]]:
     """The apex-return inputs (by API name) broadcast against each other: ``(rows, inputs, shape)``,
     by kernel argument ``rows`` the inputs given as arrays, flattened to the rows of the broadcast
     ``shape``, and ``inputs`` those given as numbers (one value for every row: not copied per
-    row)."""
+    row). With a ``call``, the memory a batch of its ``role`` needs for those rows is checked first
+    (``Call.check_memory``), before any row is copied."""
     arrays, inputs = {}, {}
     for key, x in given.items():
         arg = _APEX_ARGS[key][0]
@@ -155,9 +170,11 @@ def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], dict[str, float], tup
     shapes = {x.shape for x in arrays.values()}
     one = len(shapes) == 1
     shape = next(iter(shapes)) if one else np.broadcast_shapes(*shapes)
+    n = math.prod(shape)
+    if call is not None and n > memory.FEW_ROWS:
+        call.check_memory(role, n)
     if one and len(shape) == 1:  # arrays of one 1-D shape (the common call): the rows as they are
         return arrays, inputs, shape
-    n = math.prod(shape)
     rows = {
         a: x if x.shape == (n,) else (x if x.shape == shape else np.broadcast_to(x, shape)).reshape(n)
         for a, x in arrays.items()
@@ -171,14 +188,14 @@ def apex_return_batch(
 ) -> BatchResult:
     """Map ``name`` over apexes, touchdown angles and grounds (arrays broadcast); a status per row.
 
-    The result's columns have the broadcast shape of the inputs.
+    The result's columns have the broadcast shape of the inputs. The memory the rows need is checked
+    before any is copied (ValueError, one line with the estimate); Ctrl-C raises
+    :class:`~slipmaps.BatchInterrupted`, whose ``result`` holds the rows finished.
     """
     call = Call.of(name, params, options)
-    rows, inputs, shape = apex_rows(given)
-    out, status = call.rows("apex_return", rows, inputs, math.prod(shape), progress)
-    names = call.spec("apex_return").public_outputs
+    rows, inputs, shape = apex_rows(given, call, "apex_return")
     # the inputs as given, by public name (apex_rows has checked them): broadcast when read
-    return BatchResult(call.info.name, "apex_return", names, out, status, shape, given)
+    return call.batch("apex_return", rows, inputs, shape, batch_result, progress, given=given)
 
 
 def trajectory(
@@ -220,11 +237,9 @@ def half_stance(name: str, params: SlipParams, state, **options) -> Result:
 
 
 def half_stance_batch(name: str, params: SlipParams, states, **options) -> BatchResult:
-    """Half-stance map ``name`` over start states of shape (n, 4); a status per row."""
+    """Half-stance map ``name`` over start states of shape (n, 4); a status per row. Its memory need
+    is checked first; Ctrl-C raises :class:`~slipmaps.BatchInterrupted` with the rows finished."""
     call = Call.of(name, params, options, half=True)
-    arr = state_rows(params, states, "states")
-    n = arr.shape[0]
+    arr = state_rows(params, states, "states", call, "half")
     start = Columns(arr, call.spec("half").x)
-    out, status = call.rows("half", start, {}, n)
-    names = call.spec("half").public_outputs
-    return BatchResult(call.info.name, "half", names, out, status, (n,), start)
+    return call.batch("half", start, {}, arr.shape[:1], batch_result, given=start)

@@ -33,7 +33,9 @@ Subcommands (``slipmaps --version`` prints the installed version):
   (runtime/cli/report.py);
 - ``viability [--vibly | --energy J --heights MIN MAX N | --speeds ...] [--json] [--out PATH.npz]``:
   the viable set, the viability kernel and its measure on a grid, with a figure
-  (runtime/cli/viability.py).
+  (runtime/cli/viability.py);
+- ``warmup [MAPS]``: compile the kernels into numba's disk cache ahead, on every core, with a
+  progress bar (runtime/cli/warmup.py).
 
 A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
 that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
@@ -44,7 +46,7 @@ probe file created and removed) before any work. A reader that closes standard o
 Ctrl-C ends any command with one line and :data:`INTERRUPTED` (130). An OSError while writing is
 one line naming the path and the reason, exit 2 (``paths.writing``). On a terminal, numba compiling
 a kernel on its first use (an empty or stale cache) is one line on standard error with its seconds
-(:func:`~slipmaps.runtime.api.progress.compile_notices`; none with ``--no-progress`` or when
+(:func:`~slipmaps.runtime.api.notices.compile_notices`; none with ``--no-progress`` or when
 standard error is piped). The map names and options come from the generated index.
 """
 
@@ -56,9 +58,10 @@ import os
 import sys
 from pathlib import Path
 
+from ..api.notices import compile_notices
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
-from ..api.progress import compile_notices
+from ..api.progress import Stages
 from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import footholds as footholds_cli
 from . import report as report_cli
@@ -66,6 +69,7 @@ from . import robot as robot_cli
 from . import run as run_cli
 from . import sweep as sweep_cli
 from . import viability as viability_cli
+from . import warmup as warmup_cli
 from .args import add_params, image_path, map_options, params_of, stiffness_note
 from .defaults import (
     APEX_FROUDE,
@@ -277,6 +281,7 @@ def build_parser() -> argparse.ArgumentParser:
     robot_cli.add_parser(sub)
     footholds_cli.add_parser(sub)
     viability_cli.add_parser(sub)
+    warmup_cli.add_parser(sub)
     return parser
 
 
@@ -396,8 +401,10 @@ def _cmd_generate(args: argparse.Namespace) -> int:
                 "--target c writes a C library into a directory: slipmaps generate --target c DIR"
             )
         writable_dir("DIR", args.dir)
-        for path in _derive_module("ctarget").write(args.dir):
+        stages = Stages(3, "slipmaps generate")  # derive (12 s), translate (20 s), write
+        for path in _derive_module("ctarget").write(args.dir, stage=stages, show=None):
             print(f"wrote {path}")
+        stages.done()
         return 0
     if args.dir is not None:
         raise ValueError(f"{args.dir}: an output directory is for --target c (generated/ has its place)")
@@ -482,6 +489,7 @@ def _run(argv: list[str] | None) -> int:
         "robot": robot_cli.run,
         "footholds": footholds_cli.run,
         "viability": viability_cli.run,
+        "warmup": warmup_cli.run,
     }
     try:
         # numba compiling a kernel on first use (tens of seconds on an empty cache) is a line on a

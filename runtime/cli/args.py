@@ -127,3 +127,19 @@ def map_options(name: str, pairs: list[str] | None) -> dict:
                 f"map {name!r} option {opt.name!r} must be {_KIND_WORDS[opt.kind]}, got {value!r}"
             ) from None
     return out
+
+
+def docs_out(out: str | None, quick: bool):
+    """The directory a study writes into: ``--out DIR`` (checked writable), else the checkout's
+    docs/; a ``--quick`` study never writes docs/ (it needs ``--out``). ValueError, one line."""
+    from ..api.paths import writable_dir
+    from ..studies.checkout import docs_dir
+
+    if out is not None:
+        return writable_dir("--out", out)
+    if quick:
+        raise ValueError("--quick writes a reduced study: give --out DIR (never docs/)")
+    docs = docs_dir()
+    if docs is None:
+        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
+    return docs

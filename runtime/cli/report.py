@@ -4,9 +4,9 @@
 stability, reproductions), then the control evaluation (``slipmaps run --evaluate``), then writes
 docs/sections.md and its figure from the records (:mod:`slipmaps.runtime.report.sections`): into
 the checkout's docs/ or ``--out DIR``. It takes about ten minutes once the kernels are compiled.
-Standard error shows which stage runs, of how many (:class:`Stages`: one line per stage, on a
-terminal with the time so far), and on a terminal each stage's progress bar (``--no-progress``:
-none).
+Standard error shows which stage runs, of how many (:class:`~slipmaps.runtime.api.progress.Stages`:
+one line per stage, on a terminal with the time so far), and on a terminal each stage's progress
+bar (``--no-progress``: none).
 
 - ``--render-only``: no measurement; the page from the records already in docs/ (or ``--out``),
   as the site's build does (seconds).
@@ -22,13 +22,11 @@ from __future__ import annotations
 
 import argparse
 import sys
-import time
 from pathlib import Path
 
-from ..api.progress import is_terminal
-from .study import study_out
+from ..api.progress import Stages
 
-__all__ = ["QUICK_MAPS", "Stages", "add_parser", "run"]
+__all__ = ["QUICK_MAPS", "add_parser", "run"]
 
 #: The maps of ``--quick`` (with the baseline map, which the studies add).
 QUICK_MAPS = ("gravity-type5", "iterative")
@@ -52,37 +50,10 @@ def add_parser(sub) -> argparse.ArgumentParser:
     return p
 
 
-class Stages:
-    """``slipmaps report``'s progress on standard error: a line as each of its ``n`` stages starts,
-    ``slipmaps report: [i/n] what`` (the studies one by one, the control evaluation, the page), so
-    a log holds one line per stage; on a terminal each line also gives the time since the report
-    started, and a last line the total. The stages' own bars and numba's compile notices come
-    between the lines on a terminal only."""
+def _out(args: argparse.Namespace) -> Path:
+    from .args import docs_out
 
-    def __init__(self, n: int) -> None:
-        self.n = n
-        self.i = 0
-        self.start = time.perf_counter()
-
-    def __call__(self, what: str) -> None:
-        self.i += 1
-        line = f"slipmaps report: [{self.i}/{self.n}] {what}"
-        if is_terminal(sys.stderr):
-            line += f" ({_clock(time.perf_counter() - self.start)} so far)"
-        print(line, file=sys.stderr, flush=True)
-
-    def done(self) -> None:
-        if is_terminal(sys.stderr):
-            print(
-                f"slipmaps report: {self.n} stages in {_clock(time.perf_counter() - self.start)}",
-                file=sys.stderr,
-                flush=True,
-            )
-
-
-def _clock(seconds: float) -> str:
-    m, s = divmod(int(round(seconds)), 60)
-    return f"{m} min {s:02d} s" if m else f"{s} s"
+    return docs_out(args.out, args.quick)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -101,7 +72,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..report import sections
     from ..studies.checkout import checkout_root
 
-    out = study_out(args, "a reduced report")  # before any work
+    out = _out(args)  # before any work
     show = False if args.no_progress else None
     written: list[Path] = []
     if args.render_only:
@@ -116,7 +87,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..studies.runner import studies
 
     maps = list(QUICK_MAPS) if args.quick else None  # chosen: with the baseline map
-    stage = Stages(len(studies(maps)) + 2)  # the studies, the control evaluation, the page
+    stage = Stages(len(studies(maps)) + 2, "slipmaps report")  # the studies, the control evaluation, the page
     written += run_studies(  # the page reads <study>.json
         out / "accuracy.md", maps, show, plain_names=True, on_study=lambda s: stage(f"the {s.name} study")
     )

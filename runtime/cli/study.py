@@ -1,5 +1,5 @@
-"""What the study commands share (``slipmaps robot``, ``slipmaps footholds``): their flags, where
-they write, and their run.
+"""What the study commands share (``slipmaps robot``, ``slipmaps footholds``): their flags and their
+run (where they write: :func:`~slipmaps.runtime.cli.args.docs_out`).
 
 A study command measures its study again and rebuilds its page, record, figures and clip into the
 checkout's docs/ or ``--out DIR``; ``--quick`` the small version CI runs (``--out`` required: it
@@ -11,11 +11,10 @@ first (one line naming it when missing).
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
-from ..api.paths import writable_dir
+from .args import docs_out
 
-__all__ = ["add_study_flags", "run_study", "study_out"]
+__all__ = ["add_study_flags", "run_study"]
 
 
 def add_study_flags(p: argparse.ArgumentParser) -> None:
@@ -27,22 +26,6 @@ def add_study_flags(p: argparse.ArgumentParser) -> None:
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
 
 
-def study_out(args: argparse.Namespace, small: str = "a small study") -> Path:
-    """The directory a study (or ``slipmaps report``) writes into: ``--out``, else the checkout's
-    docs/ (ValueError, one line, for ``--quick`` without ``--out``, which writes ``small``, and
-    outside a checkout)."""
-    from ..studies.checkout import docs_dir
-
-    if args.out is not None:
-        return writable_dir("--out", args.out)
-    if args.quick:
-        raise ValueError(f"--quick writes {small}: give --out DIR (never docs/)")
-    docs = docs_dir()
-    if docs is None:
-        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
-    return docs
-
-
 def run_study(args: argparse.Namespace, write) -> int:
     """Run a study command: its flags checked, the robot's extra, then ``write(out, quick=, jobs=,
     progress=, gif=)`` (the study's writer), each path written printed."""
@@ -51,7 +34,7 @@ def run_study(args: argparse.Namespace, write) -> int:
     from ..robot.mj import mujoco
 
     mujoco()  # the extra, before any work (one line naming it when missing)
-    out = study_out(args)
+    out = docs_out(args.out, args.quick)
     progress = False if args.no_progress else None
     for path in write(out, quick=args.quick, jobs=args.jobs, progress=progress, gif=not args.no_gif):
         print(f"wrote {path}")

@@ -183,6 +183,7 @@ def check_size(definition, out, fmt: str) -> int:
 
 def run(args: argparse.Namespace) -> int:
     from ..sweep.run import sweep
+    from ..sweep.schedulers import check_scheduler
     from ..sweep.spec import Sweep
 
     data, settings = _definition(args)
@@ -190,6 +191,11 @@ def run(args: argparse.Namespace) -> int:
     if "out" not in settings:
         raise ValueError("give an output directory: --out DIR (or out in the TOML file)")
     writable_dir("--out" if args.out is not None else f"out (in {args.config})", settings["out"])
+    if settings.get("scheduler") is not None:  # its form, before anything is tried
+        check_scheduler(
+            settings["scheduler"],
+            "--scheduler" if args.scheduler is not None else f"scheduler (in {args.config})",
+        )
     if not args.yes:
         check_size(definition, settings["out"], settings.get("format") or "csv")
     try:

@@ -890,7 +890,7 @@ class Solver:
     def run(self, X, P, T, settings) -> np.ndarray:
         """Solve every row: inputs ``X`` (n, len(x)), parameter records ``P`` (1 or n rows),
         targets ``T`` (n, 2): the rows (n, :attr:`width`)."""
-        from ..api.batch import run_blocks
+        from ..api.batch import BatchInterrupted, run_blocks
 
         n = X.shape[0]
         OUT = np.empty((n, self.width))
@@ -899,5 +899,9 @@ class Solver:
         def block(lo, hi):
             self._rows(X[lo:hi], P if shared else P[lo:hi], T[lo:hi], settings, OUT[lo:hi])
 
-        run_blocks(block, n, self._rows)
+        try:
+            run_blocks(block, n, self._rows)
+        except BatchInterrupted as stop:  # Ctrl-C: the rows finished
+            stop.result = OUT[: stop.done]
+            raise
         return OUT

@@ -78,6 +78,8 @@ from functools import lru_cache
 import numpy as np
 from slipmaps.generated.status import MESSAGES, Status
 
+from ..api import memory
+from ..api.batch import BatchInterrupted
 from ..api.calls import KERNELS, Call
 from ..api.frames import status_columns, to_arrow, to_pandas
 from ..api.index import EXACT, maps
@@ -142,6 +144,9 @@ TOL = 1e-9
 SCAN = 24
 #: Map evaluations (Jacobians and values) per solve at most.
 MAX_EVALUATIONS = 200
+#: Columns of a batch's result computed apart from the solver's rows (statuses and counts as
+#: integers, the energies and their temporaries, the targets, the default angles), at most.
+BATCH_COLUMNS = 16
 #: Stance time of the angle guess, as a fraction of the spring's half period pi sqrt(m / k_c)
 #: (measured: the exact stance of the human runner's 5 m/s gait lasts 0.157 s = 0.79 of 0.199 s).
 STANCE_FRACTION = 0.8
@@ -770,7 +775,9 @@ class Deadbeat:
     ) -> DeadbeatBatch:
         """Many steps in parallel: the inputs broadcast (``touchdown_angle``: starting angles, default
         :func:`~slipmaps.runtime.control.deadbeat.default_angle` of each apex speed); a plan status
-        per row (an invalid row, e.g. a NaN apex, is MAP_FAILED with the map's INVALID_INPUT)."""
+        per row (an invalid row, e.g. a NaN apex, is MAP_FAILED with the map's INVALID_INPUT). Its
+        memory need is checked before any row is copied; Ctrl-C raises
+        :class:`~slipmaps.BatchInterrupted` with the rows solved."""
         tgt = self._targeted(target_height, target_speed)
         given = {
             "apex_height": apex_height,
@@ -784,14 +791,35 @@ class Deadbeat:
         parts = np.broadcast_arrays(*(np.asarray(real_array(k, x), dtype=float) for k, x in given.items()))
         shape = parts[0].shape
         n = int(np.prod(shape))
+        self._check_memory(n)  # before the rows are copied
         cols = {k: np.ascontiguousarray(p.reshape(n)) for k, p in zip(given, parts, strict=True)}
         if touchdown_angle is None:
             cols["touchdown_angle"] = default_angle(self.params, cols["apex_speed"])
         X = self._inputs(cols, n)
         T = np.ascontiguousarray(np.stack([cols["target_height"], cols["target_speed"]], axis=1))
         P = self._record_clipped()[None, :]
-        OUT = self.solver.run(X, P, T, self._settings[tgt])
+        try:
+            OUT = self.solver.run(X, P, T, self._settings[tgt])
+        except BatchInterrupted as stop:  # the rows finished, as a batch of their own
+            done = stop.done
+            finished = {k: c[:done] for k, c in cols.items()}
+            stop.result = self._batch_result(stop.result, X[:done], P, finished, tgt, (done,))
+            raise
         return self._batch_result(OUT, X, P, cols, tgt, shape)
+
+    def _check_memory(self, n: int) -> int:
+        """The bytes a batch of ``n`` solves allocates: per row the solver's row (its width), the
+        inputs (``x``, the targets, a copy of each of the seven given quantities) and the result's
+        columns computed apart from the row (``BATCH_COLUMNS``); ValueError, one line with the
+        estimate, beyond the machine's available memory (``slipmaps.runtime.api.memory.check``)."""
+        need = 8 * n * (self.solver.width + len(self.solver.x) + 2 + 7 + BATCH_COLUMNS)
+        if need < memory.SMALL:
+            return need
+        return memory.check(
+            need,
+            f"a deadbeat batch of {n:,} rows ({self.name}) needs",
+            "give fewer rows, or split them into several batches",
+        )
 
     def _record_clipped(self) -> np.ndarray:
         """The parameter record with the stiffness controls clipped into their bounds."""
@@ -999,7 +1027,8 @@ def deadbeat_batch(
     **map_options,
 ) -> DeadbeatBatch:
     """:func:`deadbeat` over arrays (the apex, the targets, the ground and the starting angles
-    broadcast), in parallel; a plan status per row."""
+    broadcast), in parallel; a plan status per row. Its memory need is checked before any row is
+    copied; Ctrl-C raises :class:`~slipmaps.BatchInterrupted` with the rows solved."""
     ctl = controller(name, params, controls, bounds, map_options)
     return ctl.plan_batch(
         apex_height,

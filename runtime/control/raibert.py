@@ -47,10 +47,10 @@ class RaibertGains:
     speed error, ``k_0`` (dimensionless) the thrust at no height error, ``k_h`` and ``k_i``
     (dimensionless) the height loop's proportional and integral gains on k_d / k_c."""
 
-    k_v: float = 0.2
-    k_0: float = 0.2
+    k_v: float = 0.25
+    k_0: float = 0.3
     k_h: float = 2.0
-    k_i: float = 0.1
+    k_i: float = 0.3
 
     def __post_init__(self):
         for f in fields(self):

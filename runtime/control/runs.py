@@ -57,7 +57,6 @@ from __future__ import annotations
 
 import difflib
 import math
-import os
 import time
 from dataclasses import dataclass, fields
 from pathlib import Path
@@ -65,6 +64,7 @@ from pathlib import Path
 import numpy as np
 from slipmaps.generated.status import Status
 
+from ..api import memory
 from ..api.frames import flat_columns, status_columns, to_pandas
 from ..api.index import get
 from ..api.names import RUN_RENAMED, RenamedKeys, warn_renamed
@@ -225,32 +225,13 @@ def memory_estimate(runs: int, steps: int) -> int:
     return int(runs) * int(steps) * per + int(steps) * _SCENARIO_BYTES_PER_STEP
 
 
-def _machine_memory() -> int | None:
-    """The machine's available memory in bytes (MemAvailable, else the physical memory), or None."""
-    try:
-        with open("/proc/meminfo") as f:
-            for line in f:
-                if line.startswith("MemAvailable:"):
-                    return int(line.split()[1]) * 1024
-    except (OSError, ValueError, IndexError):
-        pass
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
-    except (ValueError, OSError, AttributeError):
-        return None
-
-
 def check_memory(runs: int, steps: int, available: int | None = None) -> int:
     """The estimate of :func:`memory_estimate`; ValueError (one line with the estimate) when it
-    exceeds ``available`` bytes (default: the machine's available memory)."""
-    need = memory_estimate(runs, steps)
-    have = _machine_memory() if available is None else available
-    if have is not None and need > have:
-        raise ValueError(
-            f"{runs} run(s) of {steps} steps need about {need / 1e9:.3g} GB of memory, more than the "
-            f"{have / 1e9:.3g} GB available: run fewer steps"
-        )
-    return need
+    exceeds ``available`` bytes (default: the machine's available memory;
+    :func:`slipmaps.runtime.api.memory.check`)."""
+    return memory.check(
+        memory_estimate(runs, steps), f"{runs} run(s) of {steps} steps need", "run fewer steps", available
+    )
 
 
 @dataclass
@@ -632,7 +613,7 @@ def _correction(sc: Scenario, n: int, idx: np.ndarray, values: dict) -> tuple[np
     level = np.abs(ground - before)[:, past] <= sc.correction_gate
     out = []
     for key in ("height", "speed"):
-        r = values[f"next_{key}"][idx, past] - values[f"predicted_{key}"][idx, past]
+        r = values[f"next_apex_{key}"][idx, past] - values[f"predicted_{key}"][idx, past]
         use = level & np.isfinite(r)
         count = use.sum(axis=1)
         total = np.where(use, r, 0.0).sum(axis=1)
@@ -750,7 +731,8 @@ def _step(ctl: _Controller, n: int, idx: np.ndarray, live: _Live, batch: RunBatc
         th = np.where(failed, start, res["touchdown_angle"])
         kc = np.where(failed, p.k_c, res["k_c"])
         kd = np.where(failed, p.k_d, res["k_d"])
-        pred_h, pred_v, resid = res["next_apex_height"] + dh, res["next_apex_speed"] + dv, res["residual"]
+        # the model's own prediction at the controls it chose (for the corrected aim, when corrected)
+        pred_h, pred_v, resid = res["next_apex_height"], res["next_apex_speed"], res["residual"]
         elo, ehi = res["energy_low"], res["energy_high"]
         authority[idx] = np.where(np.isfinite(res["authority"]), res["authority"], authority[idx])
         solve = res["solve_us"]

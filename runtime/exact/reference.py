@@ -73,6 +73,7 @@ from scipy.integrate import solve_ivp
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 from slipmaps.runtime.api import model
+from slipmaps.runtime.api.batch import BatchInterrupted
 from slipmaps.runtime.api.params import SlipParams
 from slipmaps.runtime.api.validate import POLAR_NAMES, PolarState, polar_state
 from slipmaps.runtime.api.validate import check_params as _check_params
@@ -837,16 +838,21 @@ class ReferenceBackend:
             return self._states(call, rows["t"], inputs)
         out = np.full((n, len(call.spec(role).outputs)), math.nan)
         status = np.empty(n, dtype=np.int64)
-        for i in progress(range(n), n, f"exact {role.replace('_', ' ')}", show):
-            try:
-                res = self.scalar(call, role, {**inputs, **{k: float(v[i]) for k, v in rows.items()}})
-            except ValueError:
-                if role.endswith("_jacobian"):
-                    raise
-                status[i] = int(Status.INVALID_INPUT)
-                continue
-            status[i] = res[-1]
-            out[i] = res[:-1]
+        done = 0
+        try:
+            for i in progress(range(n), n, f"exact {role.replace('_', ' ')}", show):
+                try:
+                    res = self.scalar(call, role, {**inputs, **{k: float(v[i]) for k, v in rows.items()}})
+                except ValueError:
+                    if role.endswith("_jacobian"):
+                        raise
+                    status[i] = int(Status.INVALID_INPUT)
+                else:
+                    status[i] = res[-1]
+                    out[i] = res[:-1]
+                done = i + 1
+        except KeyboardInterrupt:  # the rows before done are finished
+            raise BatchInterrupted(done, n, (out[:done], status[:done])) from None
         return out, status
 
     def _states(self, call, times: np.ndarray, inputs):

@@ -66,6 +66,7 @@ _EXPORTS = {
     "RobustSet": "slipmaps.runtime.analysis.viability_robust",
     "Result": "slipmaps.runtime.api.results",
     "BatchResult": "slipmaps.runtime.api.results",
+    "BatchInterrupted": "slipmaps.runtime.api.batch",
     "Status": "slipmaps.generated.status",
     "Sweep": "slipmaps.runtime.sweep.run",
     "sweep": "slipmaps.runtime.sweep.run",
@@ -97,6 +98,7 @@ _EXPORTS = {
     "FootholdStatus": "slipmaps.runtime.control.footholds",
     "Course": "slipmaps.runtime.control.stones",
     "random_course": "slipmaps.runtime.control.stones",
+    "notices": "slipmaps.runtime.api.notices",
 }
 
 __all__ = sorted(_EXPORTS)

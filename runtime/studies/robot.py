@@ -24,7 +24,7 @@ on the robot plant (:mod:`slipmaps.runtime.control.robot_plant`, the default
      (flat ground, known);
    - **profile**: a speed profile 3 -> 5 -> 3 m/s (:data:`PROFILE`), the hops after each change
      until the speed stays within 1 % of the target;
-   - **height**: an apex height profile 1.05 -> 1.2 -> 1.05 m at 4 m/s, the same count;
+   - **height**: an apex height profile 1.1 -> 1.2 -> 1.1 m at 4 m/s, the same count;
    - **ramps**: unknown heightfield ramps, levels uniform in +-A (:data:`AMPLITUDES`) per segment
      (one segment about one step long, ramps 0.5 m wide between them), the apex targeted 1.1 + A
      above the last touchdown's ground (room for a rise of A, as the blind-running evaluation of
@@ -35,7 +35,8 @@ on the robot plant (:mod:`slipmaps.runtime.control.robot_plant`, the default
    - **cost**: the controller's time per hop [us] (a run planned hop by hop, its median) and the
      robot's simulated seconds per wall second (:func:`real_time`).
 
-The runs are spread over ``jobs`` processes (each compiles the solver it binds once). The record
+Every run's planner (flat ground, known) keeps its apexes at least :data:`FLOOR` high. The runs
+are spread over ``jobs`` processes (each compiles the solver it binds once). The record
 is deterministic up to the timings (seeded terrain and noise).
 """
 
@@ -73,17 +74,21 @@ CORRECTION = 3
 #: The speed profile: (target speed, hops).
 PROFILE = ((3.0, 10), (5.0, 15), (3.0, 15))
 #: The height profile at 4 m/s: (target height, hops).
-HEIGHTS = ((1.05, 10), (1.2, 15), (1.05, 15))
+HEIGHTS = ((1.1, 10), (1.2, 15), (1.1, 15))
+#: The planner's floor [m] (``min_height``): no planned apex below it (the default, l0, leaves the
+#: robot, which loses energy at every hop, no room: planned down to l0 on the way to a faster
+#: speed, it falls).
+FLOOR = 1.08
 #: The ramps' amplitudes [m], the runs per amplitude and speed, the noise runs per speed.
 AMPLITUDES = (0.025, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4)
 RAMP_RUNS = 50
 NOISE_RUNS = 10
 #: Raibert's gain grid: k_v [s], k_0, k_h, k_i.
 RAIBERT_GRID = {
-    "k_v": (0.1, 0.15, 0.2, 0.3, 0.4),
-    "k_0": (0.1, 0.2, 0.3),
+    "k_v": (0.1, 0.15, 0.2, 0.25, 0.3),
+    "k_0": (0.2, 0.3, 0.4),
     "k_h": (1.0, 2.0, 4.0),
-    "k_i": (0.0, 0.1, 0.3),
+    "k_i": (0.1, 0.3, 0.6),
 }
 #: The small version (``--quick``): fewer runs, amplitudes, hops and gains.
 QUICK = {
@@ -133,6 +138,7 @@ def _scenario(steps: int, speed: float, *, heights=None, speeds=None, known: int
         plant="mujoco",
         known=known,
         model="iterative",
+        min_height=FLOOR,
         **changes,
     )
 

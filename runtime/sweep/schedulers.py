@@ -7,9 +7,13 @@ writes the files (this one) only stores bytes. Schedulers:
   numba's threads;
 - ``"local:N"``: a ``dask.distributed.LocalCluster`` of N worker processes on this machine (one dask
   thread each, numba threads = cores / N), started and closed by the sweep;
-- a scheduler address (``"tcp://host:8786"``) or a ``distributed.Client``: an existing cluster. Its
-  workers need slipmaps (and pyarrow for Parquet) installed; run them with ``--nthreads 1`` so that
-  numba's threads have the cores.
+- a scheduler address (``"tcp://host:8786"``, ``tls://`` for TLS) or a ``distributed.Client``: an
+  existing cluster. Its workers need slipmaps (and pyarrow for Parquet) installed; run them with
+  ``--nthreads 1`` so that numba's threads have the cores.
+
+Any other form is refused before anything is tried (:func:`check_scheduler`, one line naming the
+forms). Reaching an address (up to :data:`CONNECT_SECONDS`) and starting a local cluster are a line
+on standard error each (:func:`~slipmaps.runtime.api.notices.notice`).
 
 On a cluster at most two tasks per worker thread are in flight (memory stays flat); results arrive
 in any order, each written as it comes. A task whose worker dies is rerun by the scheduler; a task
@@ -23,14 +27,17 @@ from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
+from ..api.notices import notice
 from .compute import compute
 from .files import encode
 from .spec import Sweep
 
-__all__ = ["ChunkFile", "chunk_file", "run_chunks", "ATTEMPTS", "check_scheduler"]
+__all__ = ["ChunkFile", "chunk_file", "run_chunks", "ATTEMPTS", "CONNECT_SECONDS", "FORMS", "check_scheduler"]
 
 #: Submissions of one chunk before a failure stops the sweep.
 ATTEMPTS = 3
+#: Seconds to reach a scheduler's address before the sweep stops with an error.
+CONNECT_SECONDS = 30
 
 
 @dataclass(frozen=True)
@@ -54,32 +61,49 @@ def chunk_file(sweep: Sweep, fmt: str, digest: str, index: int, threads: int | N
     return ChunkFile(index, chunk.rows, chunk.counts(), encode(sweep, fmt, digest, chunk))
 
 
-def check_scheduler(scheduler) -> object:
-    """``scheduler`` if it names a scheduler and, for Dask, dask.distributed is installed (without
-    connecting); ValueError otherwise."""
+#: The documented forms of a scheduler, as an error names them.
+FORMS = "'inprocess', 'local:N' (N workers on this machine) or a Dask scheduler's address tcp://HOST:PORT"
+#: The address schemes of a Dask scheduler (distributed's TCP and its TLS).
+SCHEMES = ("tcp", "tls")
+
+
+def _address_form(address: str) -> bool:
+    """Whether ``address`` is ``tcp://HOST:PORT`` (or ``tls://``), the port 1-65535."""
+    scheme, sep, rest = address.partition("://")
+    host, colon, port = rest.rpartition(":")
+    return (
+        sep == "://"
+        and scheme in SCHEMES
+        and colon == ":"
+        and bool(host.strip("[]"))
+        and port.isdigit()
+        and 0 < int(port) < 65536
+    )
+
+
+def check_scheduler(scheduler, what: str = "scheduler") -> object:
+    """``scheduler`` if it is one of the documented forms (:data:`FORMS`; or a
+    ``distributed.Client``) and, for Dask, dask.distributed is installed, checked without
+    connecting; ValueError otherwise, one line naming ``what`` (the argument, the flag or the file's
+    key) and the forms."""
     if scheduler is None or scheduler == "inprocess":
         return None
+    if isinstance(scheduler, str):
+        if scheduler.startswith("local:"):
+            n = scheduler.partition(":")[2]
+            if not n.isdigit() or int(n) < 1:
+                raise ValueError(f"{what} 'local:N' needs a positive number of workers N, got {scheduler!r}")
+        elif not _address_form(scheduler):
+            raise ValueError(f"{what} must be {FORMS}, got {scheduler!r}")
+    elif type(scheduler).__name__ != "Client":
+        raise ValueError(f"{what} must be {FORMS} or a distributed.Client, got {type(scheduler).__name__}")
     try:
         import distributed  # noqa: F401
     except ImportError:
         raise ValueError(
             "running a sweep on Dask needs dask.distributed: pip install 'slipmaps[dask]'"
         ) from None
-    if isinstance(scheduler, str):
-        if scheduler.startswith("local:"):
-            n = scheduler.partition(":")[2]
-            if not n.isdigit() or int(n) < 1:
-                raise ValueError(f"scheduler 'local:N' needs a positive number of workers, got {scheduler!r}")
-            return scheduler
-        if "://" in scheduler or ":" in scheduler:
-            return scheduler
-        raise ValueError(
-            "scheduler must be 'inprocess', 'local:N' or a dask scheduler address (tcp://host:8786), "
-            f"got {scheduler!r}"
-        )
-    if type(scheduler).__name__ == "Client":
-        return scheduler
-    raise ValueError(f"scheduler must be a string or a distributed.Client, got {type(scheduler).__name__}")
+    return scheduler
 
 
 def run_chunks(
@@ -105,6 +129,7 @@ def _client(scheduler):
         return
     if scheduler.startswith("local:"):
         n = int(scheduler.partition(":")[2])
+        notice(f"slipmaps: starting a local Dask cluster of {n} worker processes")
         cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
         cluster = LocalCluster(
             n_workers=n, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None
@@ -115,8 +140,9 @@ def _client(scheduler):
         finally:
             cluster.close()
         return
+    notice(f"slipmaps: connecting to the Dask scheduler at {scheduler} (up to {CONNECT_SECONDS} s)")
     try:
-        client = Client(scheduler, timeout="30s")
+        client = Client(scheduler, timeout=f"{CONNECT_SECONDS}s")
     except OSError as exc:
         raise ValueError(f"cannot reach the dask scheduler at {scheduler}: {exc}") from None
     with client:
