@@ -122,7 +122,7 @@ class Identified:
     factor stated as the mass m / s), ``loss`` (the fraction of the apex speed lost per step: the
     scenario's ``model_loss``), ``k_factor``, the ``fitted`` values by name, the nominal
     ``nominal`` parameters, and the one-step prediction errors of the nominal and the identified
-    model on the fitted and the held-out hops (:meth:`errors`; ``errors_nominal`` and
+    model on the fitted and the held-out hops (``errors_nominal`` and
     ``errors_fitted``: by part, ``height`` [m] and ``speed`` [m/s] mean absolute and largest, and
     relative ones)."""
 
