@@ -59,12 +59,12 @@ def basics(p: RobotParams) -> list[dict]:
                 "speed": v,
                 "angle": angle,
                 "status": str(hop.status),
-                "slip_height": slip.apex_height,
-                "robot_height": hop.apex_height,
-                "d_height_mm": 1e3 * (hop.apex_height - slip.apex_height),
-                "slip_speed": slip.apex_speed,
-                "robot_speed": hop.apex_speed,
-                "d_speed_pct": 100 * (hop.apex_speed / slip.apex_speed - 1),
+                "slip_height": slip.next_apex_height,
+                "robot_height": hop.next_apex_height,
+                "d_height_mm": 1e3 * (hop.next_apex_height - slip.next_apex_height),
+                "slip_speed": slip.next_apex_speed,
+                "robot_speed": hop.next_apex_speed,
+                "d_speed_pct": 100 * (hop.next_apex_speed / slip.next_apex_speed - 1),
                 "energy_lost_pct": 100 * lost / hop.energy_start,
                 "loss_touchdown_J": hop.loss_touchdown,
                 "loss_liftoff_J": hop.loss_liftoff,
@@ -85,7 +85,7 @@ def periodic_angle(p: RobotParams, v: float = 4.0) -> dict:
         robot.place(APEX, v, leg_angle=angle)
         robot.descend(hold(angle, p.k_c, kd * 1e4))
         hop = robot.ascend()
-        return [hop.apex_height - APEX, hop.apex_speed - v]
+        return [hop.next_apex_height - APEX, hop.next_apex_speed - v]
 
     slip = slipmaps.fixed_points("exact", p.slip_params(), apex_height=APEX, speed=v)[0].touchdown_angle
     (angle, kd), info, _, _ = fsolve(miss, [slip, p.k_d / 1e4], full_output=True, epsfcn=1e-6)
@@ -110,7 +110,7 @@ def run(robot: Hopper, hops: int, v_d: float = 4.0) -> int:
         hop = robot.ascend(kd)
         if not hop.ok:
             return i
-        t_s, v, loss = hop.t_stance, hop.apex_speed, hop.loss_liftoff
+        t_s, v, loss = hop.t_stance, hop.next_apex_speed, hop.loss_liftoff
     return hops
 
 
@@ -178,8 +178,8 @@ def spring_variants(p: RobotParams, repeat: int) -> dict:
         "affine_ms_per_sim_s": 1e3 * best_affine / sim_affine,
         "python_ms_per_sim_s": 1e3 * best_python / sim_affine,
         "python_over_affine": best_python / best_affine,
-        "d_height_mm": 1e3 * (hop_python.apex_height - hop_affine.apex_height),
-        "d_speed": hop_python.apex_speed - hop_affine.apex_speed,
+        "d_height_mm": 1e3 * (hop_python.next_apex_height - hop_affine.next_apex_height),
+        "d_speed": hop_python.next_apex_speed - hop_affine.next_apex_speed,
         "python_status": str(hop_python.status),
     }
 

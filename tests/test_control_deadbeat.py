@@ -241,7 +241,7 @@ def test_the_pages_bottom_stage_example_reaches_what_its_comment_says():
     scope = {"slipmaps": slipmaps, "params": params, "down": down}
     exec(line, scope)
     up = scope["up"]
-    assert up.status == PlanStatus.REACHED and abs(up.apex_height - 0.97) < 1e-9  # measured 7e-10
+    assert up.status == PlanStatus.REACHED and abs(up.next_apex_height - 0.97) < 1e-9  # measured 7e-10
     assert "# REACHED, 30061 N/m" in block and round(up.k_d) == 30061
     both = slipmaps.BottomDeadbeat("iterative-decompression", params).plan(down.end, 1.0, 4.9)
     assert both.status == PlanStatus.UNREACHABLE and both.k_d == 40_000.0  # at the bound 2 k_c

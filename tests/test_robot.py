@@ -139,7 +139,7 @@ def test_periodic_angle_near_the_librarys():
             robot.place(1.1, 4.0, leg_angle=x[0])
             robot.descend(hold(x[0], p.k_c, 1e4 * x[1]))
             hop = robot.ascend()
-            return [hop.apex_height - 1.1, hop.apex_speed - 4.0]
+            return [hop.next_apex_height - 1.1, hop.next_apex_speed - 4.0]
 
         x, info, ier, _ = fsolve(miss, [GAIT[4.0], 2.0], full_output=True, epsfcn=1e-6)
         assert np.abs(info["fvec"]).max() < 1e-3  # measured 3.0e-4 (default), 6e-12 (tiny)
@@ -161,8 +161,8 @@ def test_default_robot_loses_what_robot_md_measured():
         _, hop = one_hop(P, v)
         slip = slipmaps.apex_return("exact", P.slip_params(), 1.1, v, GAIT[v])
         assert hop.ok
-        assert 0.0 < hop.apex_height - slip.apex_height < 0.025  # measured 2.1, 9.6, 18.7 mm
-        assert -0.035 < hop.apex_speed / slip.apex_speed - 1 < -0.025  # -2.73, -3.00, -3.08 %
+        assert 0.0 < hop.next_apex_height - slip.next_apex_height < 0.025  # measured 2.1, 9.6, 18.7 mm
+        assert -0.035 < hop.next_apex_speed / slip.next_apex_speed - 1 < -0.025  # -2.73, -3.00, -3.08 %
         lost = 1 - hop.energy_end / hop.energy_start
         assert 0.011 < lost < 0.026  # 1.47, 2.03, 2.49 %
         assert 0.010 < hop.skid < 0.045  # 14.6, 22.7, 34.9 mm
@@ -212,9 +212,9 @@ def test_tiny_foot_approaches_the_lossless_slip():
     _, small = one_hop(tiny_foot(), 4.0)
     slip = slipmaps.apex_return("exact", P.slip_params(), 1.1, 4.0, GAIT[4.0])
     for hop, speed, energy in ((big, (-0.035, -0.025), (0.015, 0.025)), (small, (-0.008, 0.0), (0.0, 0.004))):
-        assert speed[0] < hop.apex_speed / slip.apex_speed - 1 < speed[1]
+        assert speed[0] < hop.next_apex_speed / slip.next_apex_speed - 1 < speed[1]
         assert energy[0] < 1 - hop.energy_end / hop.energy_start < energy[1]
-    assert abs(small.apex_height - slip.apex_height) < 0.006  # measured +4.6 mm (default +9.6)
+    assert abs(small.next_apex_height - slip.next_apex_height) < 0.006  # measured +4.6 mm (default +9.6)
 
 
 def test_energy_is_mujocos_plus_the_spring():
@@ -279,7 +279,7 @@ def test_a_fall_is_fall():
         robot.place(1.1, 4.0, leg_angle=angle)
         hop = robot.hop(hold(angle, p.k_c, p.k_d))
         assert hop.status == Status.FALL and not hop.ok and hop.message
-        assert math.isnan(hop.apex_height) and math.isnan(hop.apex_speed)
+        assert math.isnan(hop.next_apex_height) and math.isnan(hop.next_apex_speed)
         with pytest.raises(RuntimeError, match="place"):
             robot.descend(hold(angle, p.k_c, p.k_d))
 
@@ -369,7 +369,7 @@ def test_hop_on_a_step_reports_the_ground():
     robot.place(1.1, 4.0, x=0.0, leg_angle=GAIT[4.0])
     hop = robot.hop(hold(GAIT[4.0], P.k_c, P.k_d))
     assert hop.ok and hop.ground == 0.05  # the foot met the step (x = 0.87 m)
-    assert hop.apex_height == pytest.approx(robot.data.qpos[robot.layout.z] - 0.05, abs=0.002)
+    assert hop.next_apex_height == pytest.approx(robot.data.qpos[robot.layout.z] - 0.05, abs=0.002)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -407,4 +407,4 @@ def test_a_damped_leg_that_settles_is_no_liftoff():
     robot.place(1.1, 0.0, leg_angle=0.0)
     hop = robot.hop(hold(0.0, P.k_c, P.k_d))
     assert hop.status == Status.NO_LIFTOFF and 0.03 < hop.t_bottom < 0.08
-    assert math.isnan(hop.t_stance) and np.isnan(hop.liftoff).all() and math.isnan(hop.apex_height)
+    assert math.isnan(hop.t_stance) and np.isnan(hop.liftoff).all() and math.isnan(hop.next_apex_height)

@@ -96,6 +96,7 @@ from .compiled import N_HEAD
 __all__ = [
     "ANGLE_SCALE",
     "CONTROLS",
+    "checked_controls",
     "default_controls",
     "DEFAULT_ANGLE_BOUNDS",
     "DEFAULT_STIFFNESS_RANGE",
@@ -518,7 +519,7 @@ def default_controls(call: Call) -> tuple[str, ...]:
     return ("touchdown_angle", "k_d")
 
 
-def _controls(call: Call, controls) -> tuple[str, ...]:
+def checked_controls(call: Call, controls) -> tuple[str, ...]:
     """The controls validated against the map (ValueError naming the problem), the angle first;
     None: :func:`default_controls`."""
     if controls is None:
@@ -629,7 +630,7 @@ class Deadbeat:
         self.name = call.info.name
         self.params = params
         self._rate_limit = limit("retraction_rate", params)  # derive/params.py's row
-        self.controls = _controls(call, controls)
+        self.controls = checked_controls(call, controls)
         self.bounds = control_bounds(params, self.controls, bounds)
         if jacobian not in ("broyden", "newton"):
             raise ValueError(f"jacobian must be 'broyden' or 'newton', got {jacobian!r}")

@@ -53,7 +53,7 @@ from ..api.params import SlipParams
 from ..api.validate import check_params, real
 from . import compiled
 from . import footholds_solver as fs
-from .deadbeat import ANGLE_SCALE, Deadbeat, _controls, control_bounds, default_angle
+from .deadbeat import ANGLE_SCALE, Deadbeat, checked_controls, control_bounds, default_angle
 from .stones import LOOKAHEAD, Course, CourseError
 
 __all__ = ["FootholdPlan", "FootholdStatus", "Footholds", "LOOKAHEAD", "REACH", "WEIGHTS", "footholds"]
@@ -195,7 +195,7 @@ class Footholds:
             raise ValueError(f"map {call.info.name!r} with these options runs outside the compiled kernels")
         self.call, self.name, self.params = call, call.info.name, params
         self.options = dict(options)  # the map's options as given (the deadbeat takes them so)
-        self.controls = _controls(call, controls)
+        self.controls = checked_controls(call, controls)
         if "touchdown_angle" not in self.controls:
             raise ValueError(
                 f"controls must include touchdown_angle (it places the foot), got {self.controls!r}"

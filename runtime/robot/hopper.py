@@ -5,7 +5,7 @@ A hop, apex to apex::
     robot = Hopper(RobotParams(), terrain)
     robot.place(apex_height=1.1, apex_speed=4.0, leg_angle=0.2278)
     hop = robot.hop(hold(0.2278, 20e3, 20e3))       # = descend(swing) then ascend()
-    hop.status, hop.apex_height, hop.apex_speed, hop.skid, hop.loss_touchdown
+    hop.status, hop.next_apex_height, hop.next_apex_speed, hop.skid, hop.loss_touchdown
 
 The low-level controller runs every ``control_period`` on its sensors (:meth:`Hopper.sensors`:
 truth plus the parameters' noise, ``latency`` periods old, the foot switch included); MuJoCo
@@ -155,8 +155,8 @@ class Hop:
     ``status``, ``message``; polar states ``touchdown``, ``bottom``, ``liftoff``; ``t_descent``
     (apex -> touchdown), ``t_bottom`` (touchdown -> bottom), ``t_stance`` (touchdown -> liftoff),
     ``t_ascent`` (liftoff -> apex); ``foot_x`` (the contact point at touchdown relative to the
-    apex's hip x), ``step_length`` (the hip's x, apex to apex), the next apex: ``apex_height`` (the
-    hip above the touchdown ground), ``apex_speed`` (the centre of mass's horizontal speed: the
+    apex's hip x), ``step_length`` (the hip's x, apex to apex), the next apex: ``next_apex_height``
+    (the hip above the touchdown ground), ``next_apex_speed`` (the centre of mass's horizontal speed: the
     torso's changes in flight as the leg swings), ``apex_x`` (the hip's absolute x); ``ground``
     (the absolute height at the touchdown contact point); ``touchdown_angle`` [rad]; the robot's
     own: ``skid`` (the foot's horizontal travel in stance), ``bounces`` (foot flights in stance),
@@ -175,8 +175,8 @@ class Hop:
     t_ascent: float
     foot_x: float
     step_length: float
-    apex_height: float
-    apex_speed: float
+    next_apex_height: float
+    next_apex_speed: float
     apex_x: float
     ground: float
     touchdown_angle: float
@@ -613,8 +613,8 @@ class Hopper:
             t_stance=t_lo - t_td,
             t_ascent=t_a - t_lo,
             step_length=q_a[L.x] - dsc._apex_x,
-            apex_height=q_a[L.z] - dsc.ground,
-            apex_speed=v_x,
+            next_apex_height=q_a[L.z] - dsc.ground,
+            next_apex_speed=v_x,
             apex_x=q_a[L.x],
             skid=skid,
             scuffs=scuffs,
@@ -638,8 +638,8 @@ class Hopper:
             "t_stance": nan,
             "t_ascent": nan,
             "step_length": nan,
-            "apex_height": nan,
-            "apex_speed": nan,
+            "next_apex_height": nan,
+            "next_apex_speed": nan,
             "apex_x": nan,
             "skid": nan,
             "scuffs": 0,
@@ -664,8 +664,8 @@ class Hopper:
             t_ascent=float(values["t_ascent"]),
             foot_x=float(dsc.foot_x),
             step_length=float(values["step_length"]),
-            apex_height=float(values["apex_height"]),
-            apex_speed=float(values["apex_speed"]),
+            next_apex_height=float(values["next_apex_height"]),
+            next_apex_speed=float(values["next_apex_speed"]),
             apex_x=float(values["apex_x"]),
             ground=float(dsc.ground),
             touchdown_angle=float(dsc.touchdown_angle),

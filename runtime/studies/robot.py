@@ -289,8 +289,8 @@ def basics(speeds) -> list[dict]:
             {
                 "speed": v,
                 "angle": angle,
-                "height_diff": hop.apex_height - float(slip.next_apex_height[0]),
-                "speed_diff": hop.apex_speed / float(slip.next_apex_speed[0]) - 1.0,
+                "height_diff": hop.next_apex_height - float(slip.next_apex_height[0]),
+                "speed_diff": hop.next_apex_speed / float(slip.next_apex_speed[0]) - 1.0,
                 "energy_lost": (hop.energy_start - hop.energy_end) / hop.energy_start,
                 "loss_touchdown": hop.loss_touchdown,
                 "loss_liftoff": hop.loss_liftoff,
