@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   exact_stance.py sha256:c724dd16b5ee0012
-#   flight.py sha256:e14255f555263a7a
+#   support.py sha256:22fb35552de3db95
+#   exact_stance.py sha256:b8558ab65ab568e7
+#   flight.py sha256:9232a779632aa24c
 # ----------------------------------------------------------------------------------------------
 """Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return
 kernels."""

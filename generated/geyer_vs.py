@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer.py sha256:df8c90c66324efa8
+#   support.py sha256:22fb35552de3db95
+#   flight.py sha256:9232a779632aa24c
+#   geyer.py sha256:14dae85fb6b4e449
 # ----------------------------------------------------------------------------------------------
 """Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
 apex-return kernels."""

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight_jacobian.py sha256:13677e49e2d4419b
-#   geyer_jacobian.py sha256:9e6612ae43bfb830
+#   support.py sha256:22fb35552de3db95
+#   flight_jacobian.py sha256:890a298b33609026
+#   geyer_jacobian.py sha256:ae8281068f33bf99
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity: JVP kernels, and for a map
 its stance and apex-return Jacobians."""

@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer.py sha256:df8c90c66324efa8
-#   geyer_vs.py sha256:75f68619c7883648
-#   gravity.py sha256:a4ee793714d55977
-#   gravity_type5.py sha256:d1e2cf469b8e7186
+#   support.py sha256:22fb35552de3db95
+#   flight.py sha256:9232a779632aa24c
+#   geyer.py sha256:14dae85fb6b4e449
+#   geyer_vs.py sha256:fd359ebfc8ce3fa1
+#   gravity.py sha256:2dc3a972344ba2d5
+#   gravity_type5.py sha256:68c1f699c602cffb
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""

@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight_jacobian.py sha256:13677e49e2d4419b
-#   geyer_jacobian.py sha256:9e6612ae43bfb830
-#   geyer_vs_jacobian.py sha256:cf334acae52369c1
-#   gravity_jacobian.py sha256:2d7b7adc6772b195
-#   gravity_type5_jacobian.py sha256:f31ced069f67be3a
+#   support.py sha256:22fb35552de3db95
+#   flight_jacobian.py sha256:890a298b33609026
+#   geyer_jacobian.py sha256:ae8281068f33bf99
+#   geyer_vs_jacobian.py sha256:14ff369605de9277
+#   gravity_jacobian.py sha256:b954af0a14cfa910
+#   gravity_type5_jacobian.py sha256:f532b6cff5a0d5a7
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""

@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer_vs.py sha256:75f68619c7883648
-#   iterative.py sha256:64eb07f04d45dbba
+#   support.py sha256:22fb35552de3db95
+#   flight.py sha256:9232a779632aa24c
+#   geyer_vs.py sha256:fd359ebfc8ce3fa1
+#   iterative.py sha256:456661b5ca842532
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""

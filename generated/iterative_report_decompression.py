@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
+#   support.py sha256:22fb35552de3db95
+#   flight.py sha256:9232a779632aa24c
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom ->
 liftoff."""

@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight_jacobian.py sha256:13677e49e2d4419b
-#   geyer_vs_jacobian.py sha256:cf334acae52369c1
-#   iterative_jacobian.py sha256:823d24ae8188ce53
+#   support.py sha256:22fb35552de3db95
+#   flight_jacobian.py sha256:890a298b33609026
+#   geyer_vs_jacobian.py sha256:14ff369605de9277
+#   iterative_jacobian.py sha256:96617997521b802c
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
