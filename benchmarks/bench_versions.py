@@ -25,10 +25,13 @@ The ground-truth map (``exact``) is timed in batches of N/100 and N/1000 states.
 heights 1.0-1.1 m, speeds 3-7 m/s, touchdown angles 0.30-0.50 rad (uniform, seed 0; ``bench_maps.
 states``, drawn once by the new tree and given to both). The warm processes of each tree share a
 numba cache of their own (a temporary directory, compiled by the first round). The 1-min load is
-printed beside each number; ratios are the result, absolute times move with the machine. Usage::
+printed beside each number; ratios are the result, absolute times move with the machine.
+``--threads 1`` runs the warm workers on one numba thread: on a machine other jobs load, a batch
+that takes longer (a Jacobian's) gets its second thread less often than a short one, and the
+ratios of two-thread batches move with the load more than the work. Usage::
 
     python benchmarks/bench_versions.py --old OLD_PYTHON [--new NEW_PYTHON] [--n N] [--repeat R]
-        [--rounds K] [--maps a,b] [--no-first-calls] [--json] [--save PATH]
+        [--rounds K] [--maps a,b] [--threads T] [--no-first-calls] [--json] [--save PATH]
     python benchmarks/bench_versions.py --from-json PATH    # the report of a saved record
 """
 
@@ -155,8 +158,10 @@ def worker(args) -> dict:
 # --- the driver: runs the workers of both trees, interleaved -------------------------------------------
 
 
-def _run(python: str, cache: str, *argv: str) -> dict:
+def _run(python: str, cache: str, *argv: str, threads: int | None = None) -> dict:
     env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+    if threads:
+        env["NUMBA_NUM_THREADS"] = str(threads)
     done = subprocess.run(
         [python, str(Path(__file__).resolve()), "--worker", *argv],
         env=env,
@@ -179,7 +184,16 @@ def _best(rounds: list[dict], path: tuple[str, ...], time_key: str) -> dict:
     return min((at(r) for r in rounds), key=lambda rec: rec[time_key])
 
 
-def measure(old: str, new: str, n: int, repeat: int, rounds: int, only: list[str], first_calls: bool) -> dict:
+def measure(
+    old: str,
+    new: str,
+    n: int,
+    repeat: int,
+    rounds: int,
+    only: list[str],
+    first_calls: bool,
+    threads: int | None = None,
+) -> dict:
     versions = {"old": old, "new": new}
     with tempfile.TemporaryDirectory(prefix="slipmaps-versions-") as tmp:
         caches = {v: os.path.join(tmp, f"numba-{v}") for v in versions}
@@ -193,7 +207,7 @@ def measure(old: str, new: str, n: int, repeat: int, rounds: int, only: list[str
         runs: dict[str, list[dict]] = {v: [] for v in versions}
         for _ in range(rounds):
             for v, py in versions.items():
-                runs[v].append(_run(py, caches[v], *argv, "--repeat", str(repeat)))
+                runs[v].append(_run(py, caches[v], *argv, "--repeat", str(repeat), threads=threads))
                 print(f"round {len(runs[v])} of {v} done, load {_load():.2f}", file=sys.stderr, flush=True)
     out: dict = {
         "n": n,
@@ -362,6 +376,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--repeat", type=int, default=3, help="timed calls per round (default %(default)s)")
     parser.add_argument("--rounds", type=int, default=3, help="rounds per tree (default %(default)s)")
     parser.add_argument("--maps", default="", help="these maps only, comma-separated (default: all)")
+    parser.add_argument("--threads", type=int, help="numba threads of the warm workers (default: numba's)")
     parser.add_argument("--no-first-calls", action="store_true", help="skip the empty-cache first calls")
     parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
     parser.add_argument("--save", metavar="PATH", help="also write the JSON record to PATH")
@@ -379,7 +394,10 @@ def main(argv: list[str] | None = None) -> int:
     if not args.old:
         parser.error("--old is required")
     only = [m for m in args.maps.split(",") if m]
-    r = measure(args.old, args.new, args.n, args.repeat, args.rounds, only, not args.no_first_calls)
+    if args.threads is not None and args.threads < 1:
+        parser.error(f"--threads must be at least 1, not {args.threads}")
+    first_calls = not args.no_first_calls
+    r = measure(args.old, args.new, args.n, args.repeat, args.rounds, only, first_calls, args.threads)
     if args.save:
         Path(args.save).write_text(json.dumps(r, indent=2) + "\n")
     print(json.dumps(r, indent=2) if args.json else report(r))
