@@ -17,6 +17,11 @@ named in the report). Measured for the human runner:
   10 us);
 - Geyer's public ``slipmaps.stance_batch`` against the hand-written kernel (``handwritten_geyer.py``)
   on N touchdowns (target: at most 1.4x);
+- the Jacobian / apex-return ratio also as the median over back-to-back pairs of calls, ``--repeat``
+  pairs per round: two times taken a moment apart, which load from other jobs moves less than the
+  ratio of two bests (a longer call gets a quiet stretch less often). Not Geyer's yardstick: after
+  the hand-written kernel's parallel loop numba's OpenMP workers spin for a while, which slows a
+  call right after it (its pairs' median came out 1.9x where the bests gave 1.3x);
 - per map, the first ``slipmaps.apex_return`` and ``slipmaps.apex_return_jacobian`` in a fresh
   process with an empty ``NUMBA_CACHE_DIR`` (``bench_first_call.first_call``), old then new, elapsed
   and CPU seconds (targets: at most 5 s and 10 s).
@@ -40,9 +45,11 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -84,6 +91,20 @@ def _timed(fn, repeat: int) -> dict:
     res = fn()
     load = _load()
     return {"seconds": best_of(fn, repeat), "load_1min": load, "statuses": _statuses(res.status)}
+
+
+def _pairs(first, second, repeat: int) -> list[float]:
+    """``repeat`` ratios second() / first() of two calls made back to back: a ratio of two times
+    taken a moment apart, which load from other jobs moves less than a ratio of two bests taken
+    seconds apart (a longer call gets a quiet stretch less often than a short one)."""
+    out = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        first()
+        t1 = time.perf_counter()
+        second()
+        out.append((time.perf_counter() - t1) / (t1 - t0))
+    return out
 
 
 def worker_list() -> dict:
@@ -139,6 +160,12 @@ def worker_round(states_path: str, names: list[str], exact: list[str], repeat: i
         ):
             row[key] = _timed(lambda fn=fn, m=m, name=name: fn(name, P, h[:m], v[:m], th[:m]), repeat)
             row[key]["ns"] = 1e9 * row[key]["seconds"] / m
+        same = (name, P, h[:nj], v[:nj], th[:nj])  # the states of the jacobian batch
+        row["pairs"] = _pairs(
+            lambda same=same: slipmaps.apex_return_batch(*same),
+            lambda same=same: slipmaps.apex_return_jacobian_batch(*same),
+            repeat,
+        )
         row["scalar"] = {"load_1min": _load(), **scalar_us(name, repeat)}
         # the Jacobian's outputs x inputs: forward mode costs about one pass per input (direction)
         jac = slipmaps.apex_return_jacobian(name, P, float(h[0]), float(v[0]), float(th[0]))
@@ -231,6 +258,7 @@ def measure(
             }
             row[v]["scalar"] = _best(runs[v], ("maps", name, "scalar"), "apex_return_us")
             row[v]["jacobian_shape"] = runs[v][0]["maps"][name]["jacobian_shape"]
+            row[v]["pairs"] = [x for run in runs[v] for x in run["maps"][name].get("pairs", [])]
         out["maps"].append(row)
     if first_calls:
         for name in names:
@@ -319,11 +347,26 @@ def _report_batches(r: dict) -> list[str]:
             f"runs a pass per input), slowest {worst['per_input']:.2f}:"
         )
         lines += [f"        {shape}" for shape in shapes]
+    paired = [row for row in r["maps"] if row["old"].get("pairs") and row["new"].get("pairs")]
+    if paired:
+        lines.append(
+            "    jacobian / apex return of the same states, the median of back-to-back pairs of calls "
+            "(old / new; robust to other jobs' load):"
+        )
+        lines += [
+            f"        {row['map']} {_median(row['old']['pairs']):.2f} / {_median(row['new']['pairs']):.2f}"
+            f" ({len(row['new']['pairs'])} pairs)"
+            for row in paired
+        ]
     lines += [
         "    statuses: " + ("the same counts in both trees" if not statuses else "differ:"),
         *statuses,
     ]
     return lines
+
+
+def _median(values: list[float]) -> float:
+    return statistics.median(values) if values else float("nan")
 
 
 def _report_geyer(r: dict) -> list[str]:
