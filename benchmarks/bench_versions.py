@@ -17,6 +17,11 @@ named in the report). Measured for the human runner:
   10 us);
 - Geyer's public ``slipmaps.stance_batch`` against the hand-written kernel (``handwritten_geyer.py``)
   on N touchdowns (target: at most 1.4x);
+- the Jacobian / apex-return ratio also as the median over back-to-back pairs of calls, ``--repeat``
+  pairs per round: two times taken a moment apart, which load from other jobs moves less than the
+  ratio of two bests (a longer call gets a quiet stretch less often). Not Geyer's yardstick: after
+  the hand-written kernel's parallel loop numba's OpenMP workers spin for a while, which slows a
+  call right after it (its pairs' median came out 1.9x where the bests gave 1.3x);
 - per map, the first ``slipmaps.apex_return`` and ``slipmaps.apex_return_jacobian`` in a fresh
   process with an empty ``NUMBA_CACHE_DIR`` (``bench_first_call.first_call``), old then new, elapsed
   and CPU seconds (targets: at most 5 s and 10 s).
@@ -25,10 +30,13 @@ The ground-truth map (``exact``) is timed in batches of N/100 and N/1000 states.
 heights 1.0-1.1 m, speeds 3-7 m/s, touchdown angles 0.30-0.50 rad (uniform, seed 0; ``bench_maps.
 states``, drawn once by the new tree and given to both). The warm processes of each tree share a
 numba cache of their own (a temporary directory, compiled by the first round). The 1-min load is
-printed beside each number; ratios are the result, absolute times move with the machine. Usage::
+printed beside each number; ratios are the result, absolute times move with the machine.
+``--threads 1`` runs the warm workers on one numba thread: on a machine other jobs load, a batch
+that takes longer (a Jacobian's) gets its second thread less often than a short one, and the
+ratios of two-thread batches move with the load more than the work. Usage::
 
     python benchmarks/bench_versions.py --old OLD_PYTHON [--new NEW_PYTHON] [--n N] [--repeat R]
-        [--rounds K] [--maps a,b] [--no-first-calls] [--json] [--save PATH]
+        [--rounds K] [--maps a,b] [--threads T] [--no-first-calls] [--json] [--save PATH]
     python benchmarks/bench_versions.py --from-json PATH    # the report of a saved record
 """
 
@@ -37,9 +45,11 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -81,6 +91,20 @@ def _timed(fn, repeat: int) -> dict:
     res = fn()
     load = _load()
     return {"seconds": best_of(fn, repeat), "load_1min": load, "statuses": _statuses(res.status)}
+
+
+def _pairs(first, second, repeat: int) -> list[float]:
+    """``repeat`` ratios second() / first() of two calls made back to back: a ratio of two times
+    taken a moment apart, which load from other jobs moves less than a ratio of two bests taken
+    seconds apart (a longer call gets a quiet stretch less often than a short one)."""
+    out = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        first()
+        t1 = time.perf_counter()
+        second()
+        out.append((time.perf_counter() - t1) / (t1 - t0))
+    return out
 
 
 def worker_list() -> dict:
@@ -136,6 +160,12 @@ def worker_round(states_path: str, names: list[str], exact: list[str], repeat: i
         ):
             row[key] = _timed(lambda fn=fn, m=m, name=name: fn(name, P, h[:m], v[:m], th[:m]), repeat)
             row[key]["ns"] = 1e9 * row[key]["seconds"] / m
+        same = (name, P, h[:nj], v[:nj], th[:nj])  # the states of the jacobian batch
+        row["pairs"] = _pairs(
+            lambda same=same: slipmaps.apex_return_batch(*same),
+            lambda same=same: slipmaps.apex_return_jacobian_batch(*same),
+            repeat,
+        )
         row["scalar"] = {"load_1min": _load(), **scalar_us(name, repeat)}
         # the Jacobian's outputs x inputs: forward mode costs about one pass per input (direction)
         jac = slipmaps.apex_return_jacobian(name, P, float(h[0]), float(v[0]), float(th[0]))
@@ -155,8 +185,10 @@ def worker(args) -> dict:
 # --- the driver: runs the workers of both trees, interleaved -------------------------------------------
 
 
-def _run(python: str, cache: str, *argv: str) -> dict:
+def _run(python: str, cache: str, *argv: str, threads: int | None = None) -> dict:
     env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+    if threads:
+        env["NUMBA_NUM_THREADS"] = str(threads)
     done = subprocess.run(
         [python, str(Path(__file__).resolve()), "--worker", *argv],
         env=env,
@@ -179,7 +211,16 @@ def _best(rounds: list[dict], path: tuple[str, ...], time_key: str) -> dict:
     return min((at(r) for r in rounds), key=lambda rec: rec[time_key])
 
 
-def measure(old: str, new: str, n: int, repeat: int, rounds: int, only: list[str], first_calls: bool) -> dict:
+def measure(
+    old: str,
+    new: str,
+    n: int,
+    repeat: int,
+    rounds: int,
+    only: list[str],
+    first_calls: bool,
+    threads: int | None = None,
+) -> dict:
     versions = {"old": old, "new": new}
     with tempfile.TemporaryDirectory(prefix="slipmaps-versions-") as tmp:
         caches = {v: os.path.join(tmp, f"numba-{v}") for v in versions}
@@ -193,7 +234,7 @@ def measure(old: str, new: str, n: int, repeat: int, rounds: int, only: list[str
         runs: dict[str, list[dict]] = {v: [] for v in versions}
         for _ in range(rounds):
             for v, py in versions.items():
-                runs[v].append(_run(py, caches[v], *argv, "--repeat", str(repeat)))
+                runs[v].append(_run(py, caches[v], *argv, "--repeat", str(repeat), threads=threads))
                 print(f"round {len(runs[v])} of {v} done, load {_load():.2f}", file=sys.stderr, flush=True)
     out: dict = {
         "n": n,
@@ -217,6 +258,7 @@ def measure(old: str, new: str, n: int, repeat: int, rounds: int, only: list[str
             }
             row[v]["scalar"] = _best(runs[v], ("maps", name, "scalar"), "apex_return_us")
             row[v]["jacobian_shape"] = runs[v][0]["maps"][name]["jacobian_shape"]
+            row[v]["pairs"] = [x for run in runs[v] for x in run["maps"][name].get("pairs", [])]
         out["maps"].append(row)
     if first_calls:
         for name in names:
@@ -305,11 +347,26 @@ def _report_batches(r: dict) -> list[str]:
             f"runs a pass per input), slowest {worst['per_input']:.2f}:"
         )
         lines += [f"        {shape}" for shape in shapes]
+    paired = [row for row in r["maps"] if row["old"].get("pairs") and row["new"].get("pairs")]
+    if paired:
+        lines.append(
+            "    jacobian / apex return of the same states, the median of back-to-back pairs of calls "
+            "(old / new; robust to other jobs' load):"
+        )
+        lines += [
+            f"        {row['map']} {_median(row['old']['pairs']):.2f} / {_median(row['new']['pairs']):.2f}"
+            f" ({len(row['new']['pairs'])} pairs)"
+            for row in paired
+        ]
     lines += [
         "    statuses: " + ("the same counts in both trees" if not statuses else "differ:"),
         *statuses,
     ]
     return lines
+
+
+def _median(values: list[float]) -> float:
+    return statistics.median(values) if values else float("nan")
 
 
 def _report_geyer(r: dict) -> list[str]:
@@ -362,6 +419,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--repeat", type=int, default=3, help="timed calls per round (default %(default)s)")
     parser.add_argument("--rounds", type=int, default=3, help="rounds per tree (default %(default)s)")
     parser.add_argument("--maps", default="", help="these maps only, comma-separated (default: all)")
+    parser.add_argument("--threads", type=int, help="numba threads of the warm workers (default: numba's)")
     parser.add_argument("--no-first-calls", action="store_true", help="skip the empty-cache first calls")
     parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
     parser.add_argument("--save", metavar="PATH", help="also write the JSON record to PATH")
@@ -379,7 +437,10 @@ def main(argv: list[str] | None = None) -> int:
     if not args.old:
         parser.error("--old is required")
     only = [m for m in args.maps.split(",") if m]
-    r = measure(args.old, args.new, args.n, args.repeat, args.rounds, only, not args.no_first_calls)
+    if args.threads is not None and args.threads < 1:
+        parser.error(f"--threads must be at least 1, not {args.threads}")
+    first_calls = not args.no_first_calls
+    r = measure(args.old, args.new, args.n, args.repeat, args.rounds, only, first_calls, args.threads)
     if args.save:
         Path(args.save).write_text(json.dumps(r, indent=2) + "\n")
     print(json.dumps(r, indent=2) if args.json else report(r))

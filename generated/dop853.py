@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
+#   support.py sha256:4a3d44d95d3e4300
 # ----------------------------------------------------------------------------------------------
 """A compiled embedded Dormand-Prince 8(5,3) integrator (DOP853) with dense output and events: scipy's
 ``solve_ivp(method="DOP853")`` step by step, compiled with numba (the support module of the exact

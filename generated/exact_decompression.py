@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   exact_stance.py sha256:c724dd16b5ee0012
-#   flight.py sha256:e14255f555263a7a
+#   support.py sha256:4a3d44d95d3e4300
+#   exact_stance.py sha256:e366a5af658bf7f9
+#   flight.py sha256:af908ea30b1fc141
 # ----------------------------------------------------------------------------------------------
 """Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom ->
 liftoff."""
@@ -90,9 +90,11 @@ def exact_decompression(x, p, out):
 def exact_decompression_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_decompression` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = exact_decompression(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = exact_decompression(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -175,6 +177,8 @@ def exact_decompression_apex(x, p, out):
 def exact_decompression_apex_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_decompression_apex` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = exact_decompression_apex(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = exact_decompression_apex(row(X, i), p, row(OUT, i))

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   exact_stance.py sha256:c724dd16b5ee0012
-#   flight_jacobian.py sha256:13677e49e2d4419b
+#   support.py sha256:4a3d44d95d3e4300
+#   exact_stance.py sha256:e366a5af658bf7f9
+#   flight_jacobian.py sha256:4de4ff5a5b5282af
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -93,9 +93,11 @@ def exact_stance_jacobian(x, p, out):
 def exact_stance_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = exact_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(10), 10)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = exact_stance_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -368,6 +370,8 @@ def exact_apex_return_jacobian(x, p, out):
 def exact_apex_return_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = exact_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(10), 10)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = exact_apex_return_jacobian(row(X, i), p, row(OUT, i))

@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   dop853.py sha256:b71daf76b0ad4640
+#   dop853.py sha256:5e34e44e22581374
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The exact stance: the stance equations of motion (2)-(3) integrated by DOP853 (:mod:`.dop853`), the

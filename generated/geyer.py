@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
+#   support.py sha256:4a3d44d95d3e4300
+#   flight.py sha256:af908ea30b1fc141
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
 kernels."""
@@ -266,9 +266,11 @@ def geyer_stance(x, p, out):
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`geyer_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = geyer_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = geyer_stance(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline=into_rows)
@@ -337,9 +339,11 @@ def geyer_state_at(x, p, out):
 def geyer_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`geyer_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = geyer_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = geyer_state_at(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline=into_rows)
@@ -443,6 +447,8 @@ def geyer_apex_return(x, p, out):
 def geyer_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`geyer_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = geyer_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = geyer_apex_return(row(X, i), p, row(OUT, i))

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight_jacobian.py sha256:13677e49e2d4419b
+#   support.py sha256:4a3d44d95d3e4300
+#   flight_jacobian.py sha256:4de4ff5a5b5282af
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -410,9 +410,11 @@ def geyer_stance_jacobian(x, p, out):
 def geyer_stance_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`geyer_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = geyer_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = geyer_stance_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline=into_rows)
@@ -629,6 +631,8 @@ def geyer_apex_return_jacobian(x, p, out):
 def geyer_apex_return_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`geyer_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = geyer_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = geyer_apex_return_jacobian(row(X, i), p, row(OUT, i))

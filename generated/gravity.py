@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer.py sha256:df8c90c66324efa8
+#   support.py sha256:4a3d44d95d3e4300
+#   flight.py sha256:af908ea30b1fc141
+#   geyer.py sha256:110e83efcc6593e2
 # ----------------------------------------------------------------------------------------------
 """Gravity corrections types 0-4 (report sections 4.1-4.5): the stance, state-at-time and apex-return kernels
 of the maps gravity-type0, gravity-type1, gravity-type2, gravity-type3, gravity-type4 (one body,
@@ -294,9 +294,11 @@ def gravity_type0_stance(x, p, out):
 def gravity_type0_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type0_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type0_stance(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -476,9 +478,11 @@ def gravity_type0_state_at(x, p, out):
 def gravity_type0_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type0_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type0_state_at(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -618,9 +622,11 @@ def gravity_type0_apex_return(x, p, out):
 def gravity_type0_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type0_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type0_apex_return(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -668,9 +674,11 @@ def gravity_type1_stance(x, p, out):
 def gravity_type1_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type1_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type1_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type1_stance(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -690,9 +698,11 @@ def gravity_type1_state_at(x, p, out):
 def gravity_type1_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type1_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type1_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type1_state_at(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -712,9 +722,11 @@ def gravity_type1_apex_return(x, p, out):
 def gravity_type1_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type1_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type1_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type1_apex_return(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -783,9 +795,11 @@ def gravity_type2_stance(x, p, out):
 def gravity_type2_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type2_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type2_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type2_stance(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -805,9 +819,11 @@ def gravity_type2_state_at(x, p, out):
 def gravity_type2_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type2_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type2_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type2_state_at(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -827,9 +843,11 @@ def gravity_type2_apex_return(x, p, out):
 def gravity_type2_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type2_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type2_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type2_apex_return(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -878,9 +896,11 @@ def gravity_type3_stance(x, p, out):
 def gravity_type3_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type3_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type3_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type3_stance(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -900,9 +920,11 @@ def gravity_type3_state_at(x, p, out):
 def gravity_type3_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type3_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type3_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type3_state_at(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -922,9 +944,11 @@ def gravity_type3_apex_return(x, p, out):
 def gravity_type3_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type3_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type3_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type3_apex_return(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -1051,9 +1075,11 @@ def gravity_type4_stance(x, p, out):
 def gravity_type4_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type4_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type4_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type4_stance(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1073,9 +1099,11 @@ def gravity_type4_state_at(x, p, out):
 def gravity_type4_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type4_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type4_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type4_state_at(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1095,6 +1123,8 @@ def gravity_type4_apex_return(x, p, out):
 def gravity_type4_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type4_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type4_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type4_apex_return(row(X, i), p, row(OUT, i))

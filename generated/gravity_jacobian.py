@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight_jacobian.py sha256:13677e49e2d4419b
-#   geyer_jacobian.py sha256:9e6612ae43bfb830
+#   support.py sha256:4a3d44d95d3e4300
+#   flight_jacobian.py sha256:4de4ff5a5b5282af
+#   geyer_jacobian.py sha256:a1c9347d955c37d0
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -531,9 +531,11 @@ def gravity_type0_stance_jacobian(x, p, out):
 def gravity_type0_stance_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type0_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
     -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type0_stance_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -614,9 +616,11 @@ def gravity_type1_stance_jacobian(x, p, out):
 def gravity_type1_stance_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type1_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
     -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type1_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type1_stance_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -791,9 +795,11 @@ def gravity_type2_stance_jacobian(x, p, out):
 def gravity_type2_stance_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type2_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
     -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type2_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type2_stance_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -875,9 +881,11 @@ def gravity_type3_stance_jacobian(x, p, out):
 def gravity_type3_stance_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type3_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
     -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type3_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type3_stance_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1270,9 +1278,11 @@ def gravity_type4_stance_jacobian(x, p, out):
 def gravity_type4_stance_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type4_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
     -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type4_stance_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type4_stance_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -1531,9 +1541,11 @@ def gravity_type0_apex_return_jacobian(x, p, out):
 def gravity_type0_apex_return_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type0_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type0_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type0_apex_return_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1555,9 +1567,11 @@ def gravity_type1_apex_return_jacobian(x, p, out):
 def gravity_type1_apex_return_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type1_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type1_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type1_apex_return_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1579,9 +1593,11 @@ def gravity_type2_apex_return_jacobian(x, p, out):
 def gravity_type2_apex_return_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type2_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type2_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type2_apex_return_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1603,9 +1619,11 @@ def gravity_type3_apex_return_jacobian(x, p, out):
 def gravity_type3_apex_return_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type3_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type3_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type3_apex_return_jacobian(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1627,6 +1645,8 @@ def gravity_type4_apex_return_jacobian(x, p, out):
 def gravity_type4_apex_return_jacobian_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type4_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type4_apex_return_jacobian(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type4_apex_return_jacobian(row(X, i), p, row(OUT, i))

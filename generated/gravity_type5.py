@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer.py sha256:df8c90c66324efa8
+#   support.py sha256:4a3d44d95d3e4300
+#   flight.py sha256:af908ea30b1fc141
+#   geyer.py sha256:110e83efcc6593e2
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and
 apex-return kernels."""
@@ -364,9 +364,11 @@ def gravity_type5_stance(x, p, out):
 def gravity_type5_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type5_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type5_stance(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(9), 9)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type5_stance(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -534,9 +536,11 @@ def gravity_type5_state_at(x, p, out):
 def gravity_type5_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type5_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type5_state_at(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(9), 9)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type5_state_at(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -648,6 +652,8 @@ def gravity_type5_apex_return(x, p, out):
 def gravity_type5_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`gravity_type5_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = gravity_type5_apex_return(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(9), 9)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = gravity_type5_apex_return(row(X, i), p, row(OUT, i))

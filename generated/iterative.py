@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer.py sha256:df8c90c66324efa8
-#   geyer_vs.py sha256:75f68619c7883648
-#   gravity.py sha256:a4ee793714d55977
-#   gravity_type5.py sha256:d1e2cf469b8e7186
+#   support.py sha256:4a3d44d95d3e4300
+#   flight.py sha256:af908ea30b1fc141
+#   geyer.py sha256:110e83efcc6593e2
+#   geyer_vs.py sha256:ef01b987d9b927b3
+#   gravity.py sha256:a143b1a44c6e8a1e
+#   gravity_type5.py sha256:bbb19eaf7f21c7a4
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -965,9 +965,11 @@ def iterative_stance_zeroth_geyer(x, p, out):
 def iterative_stance_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
     -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -1104,9 +1106,11 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
 def iterative_apex_return_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1125,9 +1129,11 @@ def iterative_stance_zeroth_held(x, p, out):
 def iterative_stance_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1147,9 +1153,11 @@ def iterative_apex_return_zeroth_held(x, p, out):
 def iterative_apex_return_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1168,9 +1176,11 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
 def iterative_stance_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_gravity_type0(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1190,9 +1200,11 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
 def iterative_apex_return_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_gravity_type0(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1211,9 +1223,11 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
 def iterative_stance_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_gravity_type1(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1233,9 +1247,11 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
 def iterative_apex_return_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_gravity_type1(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1254,9 +1270,11 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
 def iterative_stance_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_gravity_type2(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1276,9 +1294,11 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
 def iterative_apex_return_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_gravity_type2(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1297,9 +1317,11 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
 def iterative_stance_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_gravity_type3(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1319,9 +1341,11 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
 def iterative_apex_return_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_gravity_type3(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1340,9 +1364,11 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
 def iterative_stance_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_gravity_type4(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1362,9 +1388,11 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
 def iterative_apex_return_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_gravity_type4(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1383,9 +1411,11 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
 def iterative_stance_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_gravity_type5(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1405,9 +1435,11 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
 def iterative_apex_return_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_gravity_type5(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1426,9 +1458,11 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
 def iterative_stance_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_zeroth_geyer_vs(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1448,6 +1482,8 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
 def iterative_apex_return_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_zeroth_geyer_vs(row(X, i), p, row(OUT, i))

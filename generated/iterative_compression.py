@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   iterative.py sha256:64eb07f04d45dbba
+#   support.py sha256:4a3d44d95d3e4300
+#   iterative.py sha256:261dd3618e20e8ff
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -125,9 +125,11 @@ def iterative_compression_zeroth_geyer(x, p, out):
 def iterative_compression_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -147,9 +149,11 @@ def iterative_compression_zeroth_held(x, p, out):
 def iterative_compression_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -169,9 +173,11 @@ def iterative_compression_zeroth_gravity_type0(x, p, out):
 def iterative_compression_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_gravity_type0(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -191,9 +197,11 @@ def iterative_compression_zeroth_gravity_type1(x, p, out):
 def iterative_compression_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_gravity_type1(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -213,9 +221,11 @@ def iterative_compression_zeroth_gravity_type2(x, p, out):
 def iterative_compression_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_gravity_type2(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -235,9 +245,11 @@ def iterative_compression_zeroth_gravity_type3(x, p, out):
 def iterative_compression_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_gravity_type3(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -257,9 +269,11 @@ def iterative_compression_zeroth_gravity_type4(x, p, out):
 def iterative_compression_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_gravity_type4(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -279,9 +293,11 @@ def iterative_compression_zeroth_gravity_type5(x, p, out):
 def iterative_compression_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_gravity_type5(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -301,6 +317,8 @@ def iterative_compression_zeroth_geyer_vs(x, p, out):
 def iterative_compression_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_compression_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_compression_zeroth_geyer_vs(row(X, i), p, row(OUT, i))

@@ -6,12 +6,12 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight_jacobian.py sha256:13677e49e2d4419b
-#   geyer_jacobian.py sha256:9e6612ae43bfb830
-#   geyer_vs_jacobian.py sha256:cf334acae52369c1
-#   gravity_jacobian.py sha256:2d7b7adc6772b195
-#   gravity_type5_jacobian.py sha256:f31ced069f67be3a
+#   support.py sha256:4a3d44d95d3e4300
+#   flight_jacobian.py sha256:4de4ff5a5b5282af
+#   geyer_jacobian.py sha256:a1c9347d955c37d0
+#   geyer_vs_jacobian.py sha256:9f039010262c20f7
+#   gravity_jacobian.py sha256:9448514800b822e7
+#   gravity_type5_jacobian.py sha256:7aecd59038dc92eb
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -1820,9 +1820,11 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
 def iterative_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2137,9 +2139,11 @@ def iterative_apex_return_jacobian_zeroth_geyer(x, p, out):
 def iterative_apex_return_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2160,9 +2164,11 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
 def iterative_stance_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2182,9 +2188,11 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
 def iterative_apex_return_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_apex_return_jacobian_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2205,10 +2213,11 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
 def iterative_stance_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type0(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2229,10 +2238,11 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
 def iterative_apex_return_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type0(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2253,10 +2263,11 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
 def iterative_stance_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type1(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2277,10 +2288,11 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
 def iterative_apex_return_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type1(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2301,10 +2313,11 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
 def iterative_stance_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type2(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2325,10 +2338,11 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
 def iterative_apex_return_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type2(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2349,10 +2363,11 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
 def iterative_stance_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type3(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2373,10 +2388,11 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
 def iterative_apex_return_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type3(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2397,10 +2413,11 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
 def iterative_stance_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type4(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2421,10 +2438,11 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
 def iterative_apex_return_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type4(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2445,10 +2463,11 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
 def iterative_stance_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_stance_jacobian_zeroth_gravity_type5(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2469,10 +2488,11 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
 def iterative_apex_return_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_apex_return_jacobian_zeroth_gravity_type5(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2493,9 +2513,11 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
 def iterative_stance_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_stance_jacobian_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_stance_jacobian_zeroth_geyer_vs(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -2515,7 +2537,8 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
 def iterative_apex_return_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_apex_return_jacobian_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer_vs(row(X, i), p, row(OUT, i))

@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer_vs.py sha256:75f68619c7883648
-#   iterative.py sha256:64eb07f04d45dbba
+#   support.py sha256:4a3d44d95d3e4300
+#   flight.py sha256:af908ea30b1fc141
+#   geyer_vs.py sha256:ef01b987d9b927b3
+#   iterative.py sha256:261dd3618e20e8ff
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -459,9 +459,11 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
 def iterative_report_stance_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -598,9 +600,11 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
 def iterative_report_apex_return_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_apex_return_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -620,9 +624,11 @@ def iterative_report_stance_zeroth_held(x, p, out):
 def iterative_report_stance_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -641,9 +647,11 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
 def iterative_report_apex_return_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_apex_return_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -663,9 +671,11 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
 def iterative_report_stance_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_gravity_type0(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -684,10 +694,11 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
 def iterative_report_apex_return_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_zeroth_gravity_type0(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -707,9 +718,11 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
 def iterative_report_stance_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_gravity_type1(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -728,10 +741,11 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
 def iterative_report_apex_return_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_zeroth_gravity_type1(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -751,9 +765,11 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
 def iterative_report_stance_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_gravity_type2(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -772,10 +788,11 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
 def iterative_report_apex_return_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_zeroth_gravity_type2(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -795,9 +812,11 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
 def iterative_report_stance_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_gravity_type3(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -816,10 +835,11 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
 def iterative_report_apex_return_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_zeroth_gravity_type3(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -839,9 +859,11 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
 def iterative_report_stance_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_gravity_type4(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -860,10 +882,11 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
 def iterative_report_apex_return_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_zeroth_gravity_type4(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -883,9 +906,11 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
 def iterative_report_stance_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_gravity_type5(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -904,10 +929,11 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
 def iterative_report_apex_return_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_zeroth_gravity_type5(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -927,9 +953,11 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
 def iterative_report_stance_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_zeroth_geyer_vs(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -948,6 +976,8 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
 def iterative_report_apex_return_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_apex_return_zeroth_geyer_vs(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_zeroth_geyer_vs(row(X, i), p, row(OUT, i))

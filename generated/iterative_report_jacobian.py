@@ -6,10 +6,10 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight_jacobian.py sha256:13677e49e2d4419b
-#   geyer_vs_jacobian.py sha256:cf334acae52369c1
-#   iterative_jacobian.py sha256:823d24ae8188ce53
+#   support.py sha256:4a3d44d95d3e4300
+#   flight_jacobian.py sha256:4de4ff5a5b5282af
+#   geyer_vs_jacobian.py sha256:9f039010262c20f7
+#   iterative_jacobian.py sha256:1d41e5a9e936c9aa
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -1011,10 +1011,11 @@ def iterative_report_stance_jacobian_zeroth_geyer(x, p, out):
 def iterative_report_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_geyer(row(X, i), row(P, min(i, last)), row(OUT,
-            i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1337,10 +1338,11 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_geyer(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_geyer(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1361,9 +1363,11 @@ def iterative_report_stance_jacobian_zeroth_held(x, p, out):
 def iterative_report_stance_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = iterative_report_stance_jacobian_zeroth_held(row(X, i), row(P, min(i, last)), row(OUT, i))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1384,10 +1388,11 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0]
     if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_held(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_held(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1408,10 +1413,11 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(x, p, out):
 def iterative_report_stance_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i]
     (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_gravity_type0(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1432,10 +1438,11 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i],
     P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_gravity_type0(row(X, i), row(P, min(i,
-            last)), row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1456,10 +1463,11 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(x, p, out):
 def iterative_report_stance_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i]
     (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_gravity_type1(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1480,10 +1488,11 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i],
     P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_gravity_type1(row(X, i), row(P, min(i,
-            last)), row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1504,10 +1513,11 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(x, p, out):
 def iterative_report_stance_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i]
     (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_gravity_type2(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1528,10 +1538,11 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i],
     P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_gravity_type2(row(X, i), row(P, min(i,
-            last)), row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1552,10 +1563,11 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(x, p, out):
 def iterative_report_stance_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i]
     (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_gravity_type3(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1576,10 +1588,11 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i],
     P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_gravity_type3(row(X, i), row(P, min(i,
-            last)), row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1600,10 +1613,11 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(x, p, out):
 def iterative_report_stance_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i]
     (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_gravity_type4(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1624,10 +1638,11 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i],
     P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_gravity_type4(row(X, i), row(P, min(i,
-            last)), row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1648,10 +1663,11 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(x, p, out):
 def iterative_report_stance_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i]
     (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_gravity_type5(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1672,10 +1688,11 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i],
     P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_gravity_type5(row(X, i), row(P, min(i,
-            last)), row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1696,10 +1713,11 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(x, p, out):
 def iterative_report_stance_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_stance_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if
     one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_stance_jacobian_zeroth_geyer_vs(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_stance_jacobian_zeroth_geyer_vs(row(X, i), p, row(OUT, i))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1720,7 +1738,8 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
 def iterative_report_apex_return_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i]
     (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    last = P.shape[0] - 1
-    for i in range(X.shape[0]):
-        STATUS[i] = (iterative_report_apex_return_jacobian_zeroth_geyer_vs(row(X, i), row(P, min(i, last)),
-            row(OUT, i)))
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    for b in range(last + 1):
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        for i in range(b, n if b == last else min(b + 1, n)):
+            STATUS[i] = iterative_report_apex_return_jacobian_zeroth_geyer_vs(row(X, i), p, row(OUT, i))

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:16c338d55e9ba950
-#   flight.py sha256:e14255f555263a7a
-#   geyer_vs.py sha256:75f68619c7883648
+#   support.py sha256:4a3d44d95d3e4300
+#   flight.py sha256:af908ea30b1fc141
+#   geyer_vs.py sha256:ef01b987d9b927b3
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""

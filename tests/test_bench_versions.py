@@ -1,6 +1,7 @@
 """benchmarks/bench_versions.py without timing anything: its command line parses (``--help``) and its
 report reads a record as the benchmark writes it (a made-up one: ratios, targets met or not, a
-status difference between the trees, a map only one tree lists)."""
+status difference between the trees, a map only one tree lists, the medians of back-to-back pairs
+where the record has them)."""
 
 from __future__ import annotations
 
@@ -63,8 +64,8 @@ def _record() -> dict:
             {
                 "map": "geyer",
                 "exact": False,
-                "old": {**_side(100, 200, 9.0), "jacobian_shape": [12, 5]},
-                "new": {**_side(105, 250, 9.5), "jacobian_shape": [13, 6]},
+                "old": {**_side(100, 200, 9.0), "jacobian_shape": [12, 5], "pairs": [2.0, 2.4, 9.0]},
+                "new": {**_side(105, 250, 9.5), "jacobian_shape": [13, 6], "pairs": [2.1, 2.2, 2.3, 8.0]},
             },
             {
                 "map": "exact",
@@ -102,6 +103,10 @@ def test_the_report_of_a_record(bench, tmp_path, capsys):
     assert "old: public 30.0 ns, hand-written 20.0 ns per state: 1.50x (NOT met)" in text
     assert "new: public 40.0 ns, hand-written 20.0 ns per state: 2.00x (NOT met)" in text
     assert "apex_return 4.0 s (met); apex_return_jacobian 12.0 s (NOT met)" in text
+    # the medians of the back-to-back pairs, where a record has them (exact's has none: left out)
+    assert (
+        "median of back-to-back pairs of calls" in text and "\n        geyer 2.40 / 2.25 (4 pairs)\n" in text
+    )
     # the same report from the saved JSON record
     saved = tmp_path / "record.json"
     saved.write_text(json.dumps(_record()))

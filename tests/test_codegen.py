@@ -48,6 +48,7 @@ from pathlib import Path
 import kernels
 import numpy as np
 import pytest
+import slipmaps
 import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
@@ -1179,6 +1180,72 @@ def test_apex_return_is_flight_stance_flight_composition(row):
         }
         assert got == (*(expected[k] for k in APEX_OUT + extras), OK)
     assert n_ok >= 10 and n_fail >= 1, (n_ok, n_fail)
+
+
+#: The batch forms run with a parameter record per row: every map's stance, and the apex return and
+#: its Jacobian of the maps whose Jacobians benchmarks/ compare (the compile time of the others').
+_PER_ROW = [
+    *((name, "stance") for name in MAP_IDS),
+    *(
+        (name, role)
+        for name in ("geyer", "iterative-report")
+        for role in ("apex_return", "apex_return_jacobian")
+    ),
+]
+
+
+@pytest.mark.parametrize(("name", "role"), _PER_ROW, ids=[f"{n}-{r}" for n, r in _PER_ROW])
+def test_a_batch_form_gives_each_row_its_own_parameter_record(name, role):
+    """A batch form ``<kernel>_rows(X, P, OUT, STATUS)`` runs the rows of each parameter record with
+    a copy of the record on its stack (derive/templates/kernels.py.j2). With a record per row (a
+    plant's stiffness per run, runtime/control/plant.py), each row is what the same row gives run
+    alone with its record, bit for bit, statuses included; with two records for five rows the
+    second serves rows 1-4; the rows of one shared record are those of the record per row."""
+    from slipmaps.runtime.api.calls import Call, kernel_functions
+
+    call = Call.of(name, slipmaps.HUMAN_RUNNER, {})
+    spec = call.spec(role)
+    rows = kernel_functions(spec)[1]
+    rng = _rng(f"per row {name} {role}")
+    n = 24
+    if role == "stance":
+        X = np.column_stack(
+            [
+                np.full(n, slipmaps.HUMAN_RUNNER.q_r_td),
+                rng.uniform(-2.0, -1.0, n),
+                rng.uniform(0.25, 0.4, n),
+                rng.uniform(-5.5, -3.5, n),
+            ]
+        )
+    else:
+        X = np.zeros((n, len(spec.x)))
+        for j, a in enumerate(spec.x):
+            X[:, j] = {"b_y_apex": rng.uniform(1.0, 1.1, n), "b_xd_apex": rng.uniform(3.0, 7.0, n)}.get(
+                a, rng.uniform(0.3, 0.5, n) if a == "q_th_td" else 0.0
+            )
+    P = np.repeat(call.record(spec)[None, :], n, axis=0)
+    stiff = [j for j, f in enumerate(spec.p) if f in ("k", "k_c", "k_d")]
+    assert stiff, spec.p
+    for j in stiff:
+        P[:, j] *= rng.uniform(0.8, 1.25, n)
+
+    def run(X, P):
+        out, status = np.empty((X.shape[0], spec.width)), np.empty(X.shape[0], dtype=np.int64)
+        rows(X, P, out, status)
+        return out, status
+
+    out, status = run(X, P)
+    assert (status == OK).sum() >= n // 2, np.unique(status, return_counts=True)
+    for i in range(n):
+        alone, code = run(X[i : i + 1], P[i : i + 1])
+        assert code[0] == status[i], i
+        np.testing.assert_array_equal(alone[0], out[i])
+    two, codes = run(X[:5], np.ascontiguousarray(P[:2]))
+    served = np.ascontiguousarray(np.repeat(P[1:2], 4, axis=0))
+    np.testing.assert_array_equal(two[1:], run(X[1:5], served)[0])
+    np.testing.assert_array_equal(codes[1:], run(X[1:5], served)[1])
+    shared, codes = run(X, np.ascontiguousarray(P[:1]))
+    np.testing.assert_array_equal(shared, run(X, np.repeat(P[:1], n, axis=0))[0])
 
 
 @pytest.mark.parametrize("p", [3, -3, 5, -5, 7, -7])
