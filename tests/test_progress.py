@@ -164,12 +164,14 @@ def test_a_first_call_says_what_compiles_and_a_kernel_in_the_cache_says_nothing(
 
 def test_a_role_kernel_is_named_by_its_map_and_role_another_by_its_file():
     from slipmaps.generated import exact_jacobian, geyer, iterative
+    from slipmaps.runtime.control import footholds_solver
 
     assert compiling_what(exact_jacobian.exact_apex_return_jacobian) == "slipmaps' exact apex_return_jacobian"
     assert compiling_what(geyer.geyer_stance_rows) == "slipmaps' geyer stance, batch"
     assert compiling_what(iterative.iterative_stance_zeroth_geyer) == "slipmaps' iterative stance"  # default
     assert compiling_what(iterative.iterative_stance_zeroth_held) == "slipmaps' iterative stance (held)"
     assert compiling_what(geyer.geyer_solution) == "slipmaps' geyer_solution of generated/geyer.py"
+    assert compiling_what(footholds_solver.plan_rows) == "slipmaps' footholds planner (plan_rows)"
 
 
 @pytest.mark.parametrize("no_progress", [False, True])

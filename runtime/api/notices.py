@@ -62,7 +62,10 @@ def _shown(enabled: bool | None, stream) -> bool:
 
 
 #: What a compiled function of slipmaps' runtime is, by its module, in a notice.
-_WHAT = {"slipmaps.runtime.control.compiled": "deadbeat solver"}
+_WHAT = {
+    "slipmaps.runtime.control.compiled": "deadbeat solver",
+    "slipmaps.runtime.control.footholds_solver": "footholds planner",
+}
 
 
 @cache
