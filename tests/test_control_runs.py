@@ -227,6 +227,22 @@ def test_the_cli_runs_a_scenario_prints_its_table_and_writes_the_figure(tmp_path
     assert len(data["steps"]) == 3 and data["fell"] is False
 
 
+def test_the_cli_runs_every_policy_of_the_declaration(capsys):
+    """``--policy`` offers what runtime/control/policies.py declares: Raibert's controller too."""
+    argv = [
+        "run",
+        str(EXAMPLES / "stop.toml"),
+        "--no-figure",
+        "--json",
+        "--steps",
+        "2",
+        "--policy",
+        "raibert",
+    ]
+    assert main(argv) in (0, 1)
+    assert json.loads(capsys.readouterr().out)["scenario"]["policy"] == "raibert"
+
+
 def test_the_cli_says_when_the_plant_fell(capsys):
     argv = ["run", str(EXAMPLES / "rough_ground.toml"), "--no-figure", "--model", "geyer", "--known", "0"]
     assert main(argv) == 1  # measured: geyer without the ground falls at step 2 (APEX_TOO_LOW)
@@ -242,6 +258,8 @@ def test_the_cli_says_when_the_plant_fell(capsys):
         (["--steps", "0"], "--steps must be at least 1"),
         (["--model", "nope"], "unknown map 'nope'"),
         (["--option", "nodes=5"], "nodes"),
+        (["--out", "{dir}"], "--out: options of --evaluate"),
+        (["--quick", "--blind"], "--quick, --blind: options of --evaluate"),
     ],
 )
 def test_cli_errors_are_one_line_before_any_work(extra, needle, tmp_path, capsys, monkeypatch):

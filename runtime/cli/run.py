@@ -28,6 +28,8 @@ import json
 import sys
 from pathlib import Path
 
+from ..control.policies import POLICIES
+
 __all__ = ["add_parser", "run"]
 
 
@@ -56,9 +58,9 @@ def add_parser(sub) -> argparse.ArgumentParser:
     p.add_argument(
         "--policy",
         default=None,
-        choices=("apex", "retraction", "time-based"),
-        help="the swing leg (overrides the file): the angle set at the apex and held; retracting at "
-        "--retraction-rate; or time-based (the controls as functions of the time since the apex)",
+        choices=tuple(POLICIES),
+        help="the controller (overrides the file): "
+        + "; ".join(f"{name}: {what}" for name, what in POLICIES.items()),
     )
     p.add_argument(
         "--retraction-rate",
@@ -189,6 +191,9 @@ def run(args: argparse.Namespace) -> int:
 
     if args.evaluate:
         return _evaluate(args)
+    given = [f for f, on in (("--out", args.out), ("--quick", args.quick), ("--blind", args.blind)) if on]
+    if given:
+        raise ValueError(f"{', '.join(given)}: options of --evaluate (a run writes --figure, --gif, --json)")
     if args.scenario is None:
         raise ValueError("give a scenario file (e.g. examples/speed_up.toml), or --evaluate")
     figure = None if args.no_figure else image_path("--figure", args.figure, example="slipmaps_run")

@@ -67,6 +67,7 @@ from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipP
 from ..api.validate import limit, limit_text
 from .deadbeat import CONTROLS, control_bounds
 from .plant import ROBOT
+from .policies import POLICIES as _POLICIES
 from .raibert import RaibertGains
 from .scenario_keys import KEY_DOCS
 from .stones import LOOKAHEAD, Course, CourseError, random_course
@@ -136,8 +137,8 @@ KEYS = {
     "params": (*FIELDS, "k"),
 }
 TERRAINS = ("flat", "steps", "stairs", "random", "stones")
-#: The swing-leg policies (module docstring).
-POLICIES = ("apex", "retraction", "time-based", "raibert", "footholds")
+#: The policies, by name (:mod:`.policies`; module docstring).
+POLICIES = tuple(_POLICIES)
 
 
 @dataclass(frozen=True)
