@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
-#   exact_stance.py sha256:e366a5af658bf7f9
+#   exact_stance.py sha256:d17a7720f5fbec2d
 #   flight.py sha256:af908ea30b1fc141
 # ----------------------------------------------------------------------------------------------
 """Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return

@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
-#   exact_stance.py sha256:e366a5af658bf7f9
+#   exact_stance.py sha256:d17a7720f5fbec2d
 #   flight_jacobian.py sha256:4de4ff5a5b5282af
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map

@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   dop853.py sha256:5e34e44e22581374
-#   slip_model.py sha256:8dd852be8d841fbc
+#   slip_model.py sha256:4cc44e1baaa041ba
 # ----------------------------------------------------------------------------------------------
 """The exact stance: the stance equations of motion (2)-(3) integrated by DOP853 (:mod:`.dop853`), the
 support module of the map ``"exact"`` (rendered from derive/templates/exact_stance.py.j2).

@@ -57,6 +57,13 @@ PARAMETERS: tuple[dict, ...] = _table.PARAMETERS
 ALIASES: dict[str, dict] = _table.ALIASES
 FIELDS: tuple[str, ...] = tuple(r["name"] for r in PARAMETERS)
 _ROWS = {r["name"]: r for r in PARAMETERS}
+#: What each domain of the table asks of a field, in its error message (a leg length's bound by l0
+#: is checked after all fields are read).
+_DOMAIN_WORDS = {
+    "positive": "must be finite and positive",
+    "leg_length": "must be finite and positive",
+    "non_negative": "must be finite and non-negative",
+}
 
 
 def _signature() -> inspect.Signature:
@@ -79,7 +86,8 @@ class SlipParams:
     """Physical parameters of the SLIP template (report Table 1), validated on construction.
 
     Fields (``derive/params.py``): m [kg], l0 [m], k_c and k_d [N/m], g_s and g_f [m/s^2], q_r_td
-    and q_r_lo [m]; ``k=`` sets k_c = k_d. Frozen, hashable, compared by value."""
+    and q_r_lo [m], the leg damping c [N s/m] (default 0); ``k=`` sets k_c = k_d. Frozen, hashable,
+    compared by value."""
 
     __slots__ = (*FIELDS, "_k", "_h")
 
@@ -115,8 +123,12 @@ class SlipParams:
                 continue
             if not is_real(value):
                 raise ParamTypeError(origin.get(name, name), "must be a real number", value)
-            if not math.isfinite(value) or value <= 0.0:
-                raise ParamError(origin.get(name, name), "must be finite and positive", value)
+            if (
+                not math.isfinite(value)
+                or value < 0.0
+                or (value == 0.0 and _ROWS[name]["domain"] != "non_negative")
+            ):
+                raise ParamError(origin.get(name, name), _DOMAIN_WORDS[_ROWS[name]["domain"]], value)
             given[name] = float(value)
         for name in FIELDS:
             default = _ROWS[name]["default"]
