@@ -102,27 +102,42 @@ def jacobian(td: np.ndarray, repeat: int) -> dict:
 
 
 @njit
-def _kernel_loop(which, td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+def _kernel_loop(which, td, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff):
     """Sum of an output of one external kernel over the rows of td (0 stance, 1 the halves,
     2 state_at at half the stance time)."""
     acc = 0.0
     for i in range(td.shape[0]):
         q_r, q_rd, q_th, q_thd = td[i, 0], td[i, 1], td[i, 2], td[i, 3]
         if which == 0:
-            acc += ek.stance(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)[1]
+            acc += ek.stance(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff)[1]
         elif which == 1:
-            down = ek.compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, q_r_lo, rtol, atol)
-            up = ek.decompression(down[1], down[2], down[3], down[4], m, l0, k_d, g_s, q_r_lo, rtol, atol)
+            down = ek.compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, q_r_lo, c, rtol, atol)
+            up = ek.decompression(
+                down[1], down[2], down[3], down[4], m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff
+            )
             acc += down[0] + up[0]
         else:
-            acc += ek.state_at(0.07, q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)[0]
+            acc += ek.state_at(
+                0.07, q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff
+            )[0]
     return acc
 
 
 def external(td: np.ndarray, repeat: int) -> dict:
     """The external kernels per state (one thread: no prange)."""
     rows = np.ascontiguousarray(td[:20_000])
-    args = (P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL)
+    args = (
+        P.m,
+        P.l0,
+        P.k_c,
+        P.k_d,
+        P.g_s,
+        P.c,
+        P.q_r_lo,
+        DEFAULT_RTOL,
+        DEFAULT_ATOL,
+        float(ek.LIFTOFF_FORCE),
+    )
     times = {}
     for which, name in enumerate(("stance", "halves", "state_at")):
         _kernel_loop(which, rows[:10], *args)
@@ -197,7 +212,7 @@ def floor(td: np.ndarray, repeat: int) -> dict:
     record = ec.Stance(*args, t_max)
     counts = [ec.stance_evaluations(*row, record) for row in rows[:2000]]
     evaluations = float(np.mean([n for status, n in counts if status == ec.OK]))
-    p = (P.m, P.l0, P.k_c, P.g_s)
+    p = (P.m, P.l0, P.k_c, P.g_s, P.c)
     reps = 1_000_000
     _rhs_chain(rows[0], p, 10)
     _rhs_independent(rows[:10], p)
@@ -244,7 +259,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     from numba import njit, types
 
     f8, arr = types.float64, types.float64[::1]
-    p4, p2 = types.UniTuple(f8, 4), types.UniTuple(f8, 2)
+    p4, p2 = types.UniTuple(f8, 5), types.UniTuple(f8, 5)  # the field's (m, l0, k, g_s, c), the events'
     rhs_sig, ev_sig = types.void(f8, arr, p4, arr), types.void(f8, arr, p2, arr)
     rhs, ev = njit(rhs_sig)(ec.polar_field.py_func), njit(ev_sig)(ec.stance_events.py_func)
     out_ty = types.Tuple((types.int64, f8, types.int64, types.int64, types.int64))
@@ -320,7 +335,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
         return acc
 
     rows = np.ascontiguousarray(td[:2000])
-    p, pe = (P.m, P.l0, P.k_c, P.g_s), (P.q_r_lo, 1e-3 * P.l0)
+    p, pe = (P.m, P.l0, P.k_c, P.g_s, P.c), (P.q_r_lo, 1e-3 * P.l0, P.k_d, P.l0, P.c)
     direction = np.array(ec.COMPRESSION_DIRECTIONS)
     cap, y_end = ec.step_cap(P.m, P.l0, P.k_c, P.g_s, DEFAULT_RTOL), np.empty(4)
     fc = (rows, rhs, ev, p, pe, direction, cap, y_end)
