@@ -15,12 +15,18 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 import slipmaps
+from hypothesis import given
+from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 from slipmaps.generated import exact_stance as ej
 from slipmaps.generated.status import Status
+from slipmaps.runtime.api import index
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
+from slipmaps.runtime.cli.app import main
+from test_exact_jacobian import stance_outputs, worst_column_error
 
 NAMES = ej.STANCE_NAMES
 
@@ -111,5 +117,173 @@ def test_damped_stance_matches_an_independent_integration(params, touchdown, lif
     assert got.status == Status.OK
     ref, _ = reference(params, touchdown, liftoff)
     worst = max(abs(got.values[n] - ref[n]) for n in NAMES)
-    # Measured over CASES: at most MEASURED (SI units: s, m, m/s, rad, rad/s).
+    # Measured over CASES: 1.6e-12 to 6.1e-11 (SI units: s, m, m/s, rad, rad/s; the largest on
+    # liftoff_q_rd at 10 % of critical damping).
     assert worst < 1e-9, worst
+
+
+def test_damped_liftoff_is_where_the_leg_force_falls_to_zero():
+    p = HUMAN_RUNNER.with_(c=0.1 * critical(HUMAN_RUNNER))
+    force = slipmaps.stance("exact", p, TOUCHDOWN)
+    length = slipmaps.stance("exact", p, TOUCHDOWN, liftoff="length")
+    q_r, q_rd = force.values["liftoff_q_r"], force.values["liftoff_q_rd"]
+    assert force.status == length.status == Status.OK
+    assert q_r < p.l0 - 0.01 and q_rd > 0.0  # measured q_r = 0.98863 m
+    leg_force = p.k_d * (p.l0 - q_r) - p.c * q_rd
+    # Measured: 1.4e-13 N here, at most 2.6e-12 N over CASES' force liftoffs (k_d l0 = 2e4 N).
+    assert abs(leg_force) < 1e-10, leg_force
+    assert force.values["t_stance"] < length.values["t_stance"]
+    assert length.values["liftoff_q_r"] == p.q_r_lo  # the pull ignored: at q_r_lo
+    # the liftoff length first when it comes before the force's zero (q_r_lo below it)
+    short = p.with_(q_r_lo=0.97)
+    assert slipmaps.stance("exact", short, TOUCHDOWN).values["liftoff_q_r"] == short.q_r_lo
+
+
+def test_energy_falls_by_the_dissipated_work():
+    """With k_c = k_d the stance energy only falls (dE/dt = -c q_rd^2): strictly along the stance,
+    and from touchdown to liftoff by the reference's W = integral of c q_rd^2 dt."""
+    p = HUMAN_RUNNER.with_(c=0.1 * critical(HUMAN_RUNNER))
+    res = slipmaps.stance("exact", p, TOUCHDOWN)
+    assert res.status == Status.OK
+    _, work = reference(p, TOUCHDOWN)
+    liftoff = [res.values[f"liftoff_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd")]
+    lost = energy(p, p.k_c, TOUCHDOWN) - energy(p, p.k_d, liftoff)
+    assert work > 10.0  # measured 11.76 J of 1641 J
+    # Measured: |lost - W| = 3.7e-9 J, 2.2e-12 of the energy (over CASES with k_c = k_d: <= 2.3e-12).
+    assert abs(lost - work) < 1e-11 * energy(p, p.k_c, TOUCHDOWN), (lost, work)
+    t = np.linspace(0.0, res.values["t_stance"], 201)
+    _, states, status = slipmaps.trajectory("exact", p, TOUCHDOWN, t=t)
+    assert status == Status.OK
+    e = np.array([energy(p, p.k_c, s) for s in states])
+    assert np.all(np.diff(e) < 0.0), np.max(np.diff(e))
+
+
+#: Apexes (height / l0, speed / sqrt(g_f l0), touchdown angle [rad]).
+STEPS = np.array([(1.0, 1.6, 0.35), (1.1, 1.3, 0.4), (1.0, 1.1, 0.35)])
+
+
+@pytest.mark.parametrize(
+    "params",
+    [HUMAN_RUNNER, HUMAN_RUNNER.with_(k_d=24_000.0, q_r_lo=0.98), ROBOT_HOPPER.with_(k_d=1_700.0)],
+    ids=["human", "human-kd-qrlo", "robot-kd"],
+)
+def test_zero_damping_is_the_lossless_map_bit_for_bit(params):
+    """c = 0 given or not, liftoff "force" (default) or "length": the same values, bitwise (the
+    Jacobians too, but for c's own column: a derivative from c > 0, :func:`test_jacobian_at_zero_damping`)."""
+    p = params
+    explicit = SlipParams(**{**p.as_dict(), "c": 0.0})
+    h, v, a = (STEPS * [p.l0, math.sqrt(p.g_f * p.l0), 1.0]).T
+    runs = [{}, {"liftoff": "length"}, {"liftoff": "force"}]
+    apex = [slipmaps.apex_return_batch("exact", q, apex_height=h, apex_speed=v, touchdown_angle=a, **o)
+            for q in (p, explicit) for o in runs]  # fmt: skip
+    assert np.count_nonzero(apex[0].status == Status.OK) >= 2
+    td = np.array([ROBOT_TOUCHDOWN if p.l0 < 1.0 else TOUCHDOWN, (0.99 * p.q_r_td, -0.8, 0.2, -3.0)])
+    stance = [slipmaps.stance_batch("exact", q, td, **o) for q in (p, explicit) for o in runs]
+    jac = [slipmaps.stance_jacobian_batch("exact", q, td, **o) for q in (p, explicit) for o in runs]
+    for batch in (apex, stance):
+        for other in batch[1:]:
+            np.testing.assert_array_equal(other.status, batch[0].status)
+            for name in batch[0].names:
+                np.testing.assert_array_equal(other[name], batch[0][name])
+    keep = [j for j in range(ej.N_IN) if j != ej.C]
+    for other in jac[1:]:
+        np.testing.assert_array_equal(other.matrix[..., keep], jac[0].matrix[..., keep])
+
+
+@pytest.mark.parametrize(("params", "touchdown", "liftoff"), CASES)
+def test_damped_jacobian_matches_central_differences(params, touchdown, liftoff):
+    """Every column, c's included: the variational equations with the damper's term, the saltation at
+    the bottom and the map to the liftoff surface (the leg force's zero with "force")."""
+    p = params
+    jac = slipmaps.stance_jacobian("exact", p, touchdown, liftoff=liftoff)
+    assert jac.status == Status.OK
+    w0 = np.array([*touchdown, p.k_c, p.k_d, p.c])
+    columns = [j for j in range(ej.N_IN) if not (j == 0 and touchdown[0] >= p.l0)]  # q_r_td = l0: no q_r + h
+    worst = worst_column_error(p, w0, jac.matrix, columns, liftoff=liftoff)
+    # Measured over CASES: 3.1e-11 to 4.9e-9 (test_exact_jacobian.py's measure and step).
+    assert worst < 3e-8, worst
+
+
+@pytest.mark.parametrize(
+    ("params", "touchdown"),
+    [
+        (HUMAN_RUNNER, TOUCHDOWN),
+        (HUMAN_RUNNER.with_(q_r_lo=0.97), TOUCHDOWN),
+        (ROBOT_HOPPER, ROBOT_TOUCHDOWN),
+    ],
+    ids=["human", "human-qrlo", "robot"],
+)
+def test_jacobian_at_zero_damping_is_the_derivative_from_above(params, touchdown):
+    """At c = 0 (the domain's edge) c's column is the one-sided derivative toward c > 0, where
+    liftoff="force" lifts off on the leg force's zero (at q_r_lo = l0 it meets q_r = l0): against a
+    second-order one-sided difference, h = 1e-5 of the critical damping."""
+    p = params
+    jac = slipmaps.stance_jacobian("exact", p, touchdown)
+    assert jac.status == Status.OK
+    w0 = np.array([*touchdown, p.k_c, p.k_d, 0.0])
+    step = np.zeros(ej.N_IN)
+    step[ej.C] = 1e-5 * critical(p)
+    f0, f1, f2 = (stance_outputs(p, w0 + i * step) for i in range(3))
+    column = jac.matrix[:, ej.C]
+    fd = (-f2 + 4.0 * f1 - 3.0 * f0) / (2.0 * step[ej.C])
+    # Measured: 2.0e-10 (human), 7.2e-10 (q_r_lo 0.97), 1.7e-9 (robot); h = 1e-4: up to 1.2e-7.
+    assert np.max(np.abs(fd - column)) / np.max(np.abs(column)) < 3e-8
+
+
+E_ROUNDOFF = 2e-11  # relative; measured at most 5.5e-12 over 560 apexes of that range with c = 0
+
+
+@given(
+    height=st.floats(1.0, 1.1),
+    speed=st.floats(3.5, 5.0),
+    angle=st.floats(0.35, 0.45),
+    damping=st.floats(0.0, 0.2),
+)
+def test_damped_hop_never_gains_energy(height, speed, angle, damping):
+    """Over an apex return of the exact damped map (liftoff "force"; the flights and g_s = g_f
+    conserve energy), the next apex's energy is at most the apex's: the damper takes c q_rd^2 and
+    the spring's energy left at a liftoff below l0 stays in the massless leg. In that range every
+    hop is OK up to 20 % of critical damping (measured over a grid of 560)."""
+    p = HUMAN_RUNNER.with_(c=damping * critical(HUMAN_RUNNER))
+    res = slipmaps.apex_return("exact", p, apex_height=height, apex_speed=speed, touchdown_angle=angle)
+    assert res.status == Status.OK
+    before = p.m * (p.g_f * height + 0.5 * speed**2)
+    after = p.m * (p.g_f * res.values["next_apex_height"] + 0.5 * res.values["next_apex_speed"] ** 2)
+    assert after <= before * (1.0 + E_ROUNDOFF), (after - before) / before
+
+
+def test_a_map_without_c_refuses_damping_in_one_line():
+    damped = HUMAN_RUNNER.with_(c=50.0)
+    takers = [m.name for m in (*slipmaps.maps(), *index.halves()) if "c" in m.params]
+    assert takers == ["exact", "exact-compression", "exact-decompression"]
+    apex = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35}
+    calls = [
+        lambda: slipmaps.apex_return("geyer", damped, **apex),
+        lambda: slipmaps.apex_return_batch("iterative", damped, **apex),
+        lambda: slipmaps.stance("gravity-type2", damped, TOUCHDOWN),
+        lambda: slipmaps.stance_jacobian("geyer", damped, TOUCHDOWN),
+        lambda: slipmaps.half_stance("iterative-compression", damped, TOUCHDOWN),
+    ]
+    for call in calls:
+        with pytest.raises(ValueError) as err:
+            call()
+        message = str(err.value)
+        assert "\n" not in message and "does not model c" in message and "c=50.0" in message
+        assert message.endswith("maps that take c: " + ", ".join(takers)), message
+    for name in ("geyer", "iterative"):  # c = 0 (the default) is every map's
+        assert slipmaps.apex_return(name, HUMAN_RUNNER.with_(c=0.0), **apex).status == Status.OK
+    with pytest.raises(ValueError, match="method='scipy'.* does not model the leg damping c"):
+        slipmaps.stance("exact", damped, TOUCHDOWN, method="scipy")
+    with pytest.raises(ValueError, match="c must be finite and non-negative"):
+        HUMAN_RUNNER.with_(c=-1.0)
+
+
+def test_cli_and_scenarios_refuse_damping_for_a_map_without_it(tmp_path, capsys):
+    assert main(["compare", "--no-plot", "--map", "geyer", "--c", "50"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("slipmaps compare: error: map 'geyer' does not model c") and err.count("\n") == 1
+    scenario = tmp_path / "damped.toml"
+    scenario.write_text('steps = 1\nmodel = "iterative"\nplant = "exact"\n[params]\nc = 50.0\n')
+    assert main(["run", str(scenario), "--no-figure"]) == 2
+    err = capsys.readouterr().err
+    assert "map 'iterative' does not model c" in err and "Traceback" not in err and err.count("\n") == 1

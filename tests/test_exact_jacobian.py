@@ -55,7 +55,7 @@ CASES = [
 ]
 
 
-def _outputs(p: SlipParams, w: np.ndarray, **options) -> np.ndarray:
+def stance_outputs(p: SlipParams, w: np.ndarray, **options) -> np.ndarray:
     stiffness = p.with_(k_c=w[ej.K_C], k_d=w[ej.K_D], c=w[ej.C])
     res = slipmaps.stance("exact", stiffness, w[: ej.N_POLAR], **options)
     assert res.status == Status.OK
@@ -88,7 +88,9 @@ def worst_column_error(p: SlipParams, w0: np.ndarray, matrix: np.ndarray, column
     for j in columns:
         step = np.zeros(ej.N_IN)
         step[j] = FD_STEP * scale[j]
-        fd = (_outputs(p, w0 + step, **options) - _outputs(p, w0 - step, **options)) / (2 * step[j])
+        fd = (stance_outputs(p, w0 + step, **options) - stance_outputs(p, w0 - step, **options)) / (
+            2 * step[j]
+        )
         worst = max(worst, float(np.max(np.abs(fd - matrix[:, j])) / np.max(np.abs(matrix[:, j]))))
     return worst
 
