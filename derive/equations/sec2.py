@@ -46,8 +46,9 @@ def check_stance_polar_display() -> None:
     derived=lambda: forms(*zip((q_rdd, q_thdd), mechanics.stance_polar_rhs(k, g_s, c)[1::2], strict=True)),
 )
 def check_stance_polar_damped() -> None:
-    """Stated (the leg damping): m q_rdd = m q_r q_thd^2 + k (l0 - q_r) - c q_rd - m g_s cos q_th, the
-    angular row of eq (3) unchanged."""
+    """Printed: nothing (the report's leg is lossless); the stated extension, checked as if printed:
+    m q_rdd = m q_r q_thd^2 + k (l0 - q_r) - c q_rd - m g_s cos q_th, the angular row of eq (3)
+    unchanged."""
     el_r, el_th = mechanics.euler_lagrange_polar(k, g_s, c)
     _, el_th_lossless = mechanics.euler_lagrange_polar()
     stated = m * q_rdd - (m * q_r * q_thd**2 + k * (l0 - q_r) - c * q_rd - m * g_s * sp.cos(q_th))
