@@ -44,6 +44,7 @@ def check_stance_polar_display() -> None:
     "dissipation function R = c q_rd^2/2: q_rdd gains -c q_rd/m, q_thdd is unchanged (the damper "
     "acts along the leg, no torque about the toe); at c = 0 it is the row above.",
     derived=lambda: forms(*zip((q_rdd, q_thdd), mechanics.stance_polar_rhs(k, g_s, c)[1::2], strict=True)),
+    extension=True,
 )
 def check_stance_polar_damped() -> None:
     """Printed: nothing (the report's leg is lossless); the stated extension, checked as if printed:
