@@ -149,10 +149,9 @@ def _kernel_loop(which, td, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff
     return acc
 
 
-def external(td: np.ndarray, repeat: int) -> dict:
-    """The external kernels per state (one thread: no prange)."""
-    rows = np.ascontiguousarray(td[:20_000])
-    args = (
+def _external_args() -> tuple[float, ...]:
+    """The external stance kernels' arguments after the touchdown state (:func:`_kernel_loop`'s)."""
+    return (
         P.m,
         P.l0,
         P.k_c,
@@ -164,6 +163,12 @@ def external(td: np.ndarray, repeat: int) -> dict:
         DEFAULT_ATOL,
         float(ek.LIFTOFF_FORCE),
     )
+
+
+def external(td: np.ndarray, repeat: int) -> dict:
+    """The external kernels per state (one thread: no prange)."""
+    rows = np.ascontiguousarray(td[:20_000])
+    args = _external_args()
     times = {}
     for which, name in enumerate(("stance", "halves", "state_at")):
         _kernel_loop(which, rows[:10], *args)
@@ -235,18 +240,7 @@ def floor(td: np.ndarray, repeat: int) -> dict:
     rows = np.ascontiguousarray(td[:20_000])
     t_max = stance_time_limit(P.m, P.l0, P.k_c, P.k_d, P.g_s)
     record = ec.Stance(P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL, t_max, P.c)
-    args = (
-        P.m,
-        P.l0,
-        P.k_c,
-        P.k_d,
-        P.g_s,
-        P.c,
-        P.q_r_lo,
-        DEFAULT_RTOL,
-        DEFAULT_ATOL,
-        float(ek.LIFTOFF_FORCE),
-    )
+    args = _external_args()
     counts = [ec.stance_evaluations(*row, record) for row in rows[:2000]]
     evaluations = float(np.mean([n for status, n in counts if status == ec.OK]))
     p = (P.m, P.l0, P.k_c, P.g_s, P.c)
