@@ -23,7 +23,10 @@ heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps
     (``exact_stance.stance_evaluations``) times the cost of one evaluation (an njit loop of
     evaluations, each from the state the one before moved: the latency a Runge-Kutta stage waits
     for; independent evaluations' throughput printed too), against the stance's time from (e);
-    target: within 2.5x.
+    target: within 2.5x;
+(g) the damped stance (leg damping c at 10 % of the critical 2 sqrt(k_c m), issue 54): the batch
+    kernel on one thread with ``liftoff="force"`` and ``"length"``, relative to the lossless stance
+    (c = 0) measured side by side.
 
 Best of ``--repeat`` after a warm-up call (compilation excluded); ratios are measured in one run,
 absolute times move with the machine and its load (printed). Usage::
@@ -58,10 +61,33 @@ TARGET_SPEEDUP = 100.0
 N_SCIPY = 50
 
 
-def _stance_rows(rows: np.ndarray):
+def _stance_rows(rows: np.ndarray, params=P, **options):
     """The exact map's batch (the generated parallel kernel around the compiled stance)."""
-    res = slipmaps.stance_batch("exact", P, rows)
+    res = slipmaps.stance_batch("exact", params, rows, **options)
     return np.column_stack([res[n] for n in res.names]), res["status"]
+
+
+#: The leg damping of (g): 10 % of the critical damping of the human runner's leg.
+DAMPED = P.with_(c=0.1 * 2.0 * math.sqrt(P.k_c * P.m))
+
+
+def damped(td: np.ndarray, repeat: int) -> dict:
+    """(g): the damped stance against the lossless one, batch kernel on one thread, side by side."""
+    cases = {"lossless": (P, {}), "force": (DAMPED, {}), "length": (DAMPED, {"liftoff": "length"})}
+    for params, options in cases.values():
+        _stance_rows(td[:10], params, **options)  # warm-up
+    times = {
+        name: with_threads(1, lambda p=p, o=o: best_of(lambda: _stance_rows(td, p, **o), repeat)) / len(td)
+        for name, (p, o) in cases.items()
+    }
+    return {
+        "c": DAMPED.c,
+        "lossless_us": 1e6 * times["lossless"],
+        "force_us": 1e6 * times["force"],
+        "length_us": 1e6 * times["length"],
+        "force_ratio": times["force"] / times["lossless"],
+        "length_ratio": times["length"] / times["lossless"],
+    }
 
 
 def per_stance(td: np.ndarray, repeat: int) -> dict:
@@ -102,27 +128,47 @@ def jacobian(td: np.ndarray, repeat: int) -> dict:
 
 
 @njit
-def _kernel_loop(which, td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+def _kernel_loop(which, td, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff):
     """Sum of an output of one external kernel over the rows of td (0 stance, 1 the halves,
     2 state_at at half the stance time)."""
     acc = 0.0
     for i in range(td.shape[0]):
         q_r, q_rd, q_th, q_thd = td[i, 0], td[i, 1], td[i, 2], td[i, 3]
         if which == 0:
-            acc += ek.stance(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)[1]
+            acc += ek.stance(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff)[1]
         elif which == 1:
-            down = ek.compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, q_r_lo, rtol, atol)
-            up = ek.decompression(down[1], down[2], down[3], down[4], m, l0, k_d, g_s, q_r_lo, rtol, atol)
+            down = ek.compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, q_r_lo, c, rtol, atol)
+            up = ek.decompression(
+                down[1], down[2], down[3], down[4], m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff
+            )
             acc += down[0] + up[0]
         else:
-            acc += ek.state_at(0.07, q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)[0]
+            acc += ek.state_at(
+                0.07, q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff
+            )[0]
     return acc
+
+
+def _external_args() -> tuple[float, ...]:
+    """The external stance kernels' arguments after the touchdown state (:func:`_kernel_loop`'s)."""
+    return (
+        P.m,
+        P.l0,
+        P.k_c,
+        P.k_d,
+        P.g_s,
+        P.c,
+        P.q_r_lo,
+        DEFAULT_RTOL,
+        DEFAULT_ATOL,
+        float(ek.LIFTOFF_FORCE),
+    )
 
 
 def external(td: np.ndarray, repeat: int) -> dict:
     """The external kernels per state (one thread: no prange)."""
     rows = np.ascontiguousarray(td[:20_000])
-    args = (P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL)
+    args = _external_args()
     times = {}
     for which, name in enumerate(("stance", "halves", "state_at")):
         _kernel_loop(which, rows[:10], *args)
@@ -193,11 +239,11 @@ def floor(td: np.ndarray, repeat: int) -> dict:
     loop on one thread, as (e)); target: within 2.5x."""
     rows = np.ascontiguousarray(td[:20_000])
     t_max = stance_time_limit(P.m, P.l0, P.k_c, P.k_d, P.g_s)
-    args = (P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL)
-    record = ec.Stance(*args, t_max)
+    record = ec.Stance(P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL, t_max, P.c)
+    args = _external_args()
     counts = [ec.stance_evaluations(*row, record) for row in rows[:2000]]
     evaluations = float(np.mean([n for status, n in counts if status == ec.OK]))
-    p = (P.m, P.l0, P.k_c, P.g_s)
+    p = (P.m, P.l0, P.k_c, P.g_s, P.c)
     reps = 1_000_000
     _rhs_chain(rows[0], p, 10)
     _rhs_independent(rows[:10], p)
@@ -244,7 +290,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     from numba import njit, types
 
     f8, arr = types.float64, types.float64[::1]
-    p4, p2 = types.UniTuple(f8, 4), types.UniTuple(f8, 2)
+    p4, p2 = types.UniTuple(f8, 5), types.UniTuple(f8, 5)  # the field's (m, l0, k, g_s, c), the events'
     rhs_sig, ev_sig = types.void(f8, arr, p4, arr), types.void(f8, arr, p2, arr)
     rhs, ev = njit(rhs_sig)(ec.polar_field.py_func), njit(ev_sig)(ec.stance_events.py_func)
     out_ty = types.Tuple((types.int64, f8, types.int64, types.int64, types.int64))
@@ -320,7 +366,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
         return acc
 
     rows = np.ascontiguousarray(td[:2000])
-    p, pe = (P.m, P.l0, P.k_c, P.g_s), (P.q_r_lo, 1e-3 * P.l0)
+    p, pe = (P.m, P.l0, P.k_c, P.g_s, P.c), (P.q_r_lo, 1e-3 * P.l0, P.k_d, P.l0, P.c)
     direction = np.array(ec.COMPRESSION_DIRECTIONS)
     cap, y_end = ec.step_cap(P.m, P.l0, P.k_c, P.g_s, DEFAULT_RTOL), np.empty(4)
     fc = (rows, rhs, ev, p, pe, direction, cap, y_end)
@@ -341,6 +387,7 @@ def run(n: int, repeat: int, with_first_class: bool) -> dict:
     out["jacobian"] = jacobian(td, repeat)
     out["external"] = external(td, repeat)
     out["floor"] = floor(td, repeat)
+    out["damped"] = damped(td, repeat)
     if with_first_class:
         out["first_class"] = first_class(td, repeat)
     return out
@@ -371,7 +418,7 @@ def report(r: dict) -> str:
     j = r["jacobian"]
     lines += [
         "",
-        f"(c) stance with its 10 x 6 Jacobian (exact_jacobian, 1 thread): {j['jacobian_us']:.1f} us "
+        f"(c) stance with its 10 x {ec.N_IN} Jacobian (exact_jacobian, 1 thread): {j['jacobian_us']:.1f} us "
         f"per state, {j['ratio_to_stance']:.1f}x the stance alone",
     ]
     e = r["external"]
@@ -397,6 +444,14 @@ def report(r: dict) -> str:
         f"{f['steps_us']:.2f} us; the rest (subphase starts, event checks at each step end, event "
         f"location on the interpolant, the kernel call and its arrays) "
         f"{f['stance_us'] - f['steps_us']:.2f} us",
+    ]
+    d = r["damped"]
+    lines += [
+        "",
+        f"(g) damped stance, c = {d['c']:.0f} N s/m (10 % of critical; batch kernel, 1 thread): "
+        f"liftoff force {d['force_us']:.2f} us ({d['force_ratio']:.2f}x the lossless "
+        f"{d['lossless_us']:.2f} us), "
+        f"length {d['length_us']:.2f} us ({d['length_ratio']:.2f}x)",
     ]
     if "first_class" in r:
         f = r["first_class"]

@@ -53,6 +53,15 @@ def readme_maps_table(index: dict) -> str:
     return "\n".join(lines) + "\n"
 
 
+def parameter_maps(index: dict, name: str) -> str:
+    """The maps and half-stance maps whose declarations take parameter ``name`` (their index rows'
+    ``params``), as a Markdown list: what a page on that parameter says takes it today."""
+    rows = [r for r in (*index["MAPS"], index["EXACT"], *index["HALVES"]) if name in r["params"]]
+    if not rows:
+        return f"No map takes `{name}` yet.\n"
+    return "".join(f"- `{r['name']}`: {r['title']}\n" for r in rows)
+
+
 def maps_table(index: dict) -> str:
     """The map table of docs/maps.md: every map with its requirements and options."""
     lines = [

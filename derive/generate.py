@@ -4,7 +4,8 @@ Files: ``generated/status.py``; one kernel module per :class:`~.ir.Module` of th
 (``slip_model``, ``flight``) and per declared map (:func:`.maps.all_maps`); ``generated/maps_index.py``
 (the index the runtime reads); ``generated/support.py`` (what the kernels share: stack arrays, a
 row's store and checks); ``generated/__init__.py``; ``docs/equations.md`` (+ ``.json``, the
-record the report's sections 6-8 read) and ``docs/maps.md``; the equation summary and the short map
+record the report's sections 6-8 read) and ``docs/maps.md``; the maps that take the leg damping in
+``docs/damping.md``; the equation summary and the short map
 table of ``README.md`` and the report equations of each family page (:func:`family_pages`), between
 their markers.
 
@@ -393,6 +394,10 @@ def build_files() -> dict[str, str]:
     files["docs/equations.json"] = render_equation_record()
     files["docs/maps.md"] = docs.maps_page(index)
     files.update(family_pages())
+    damping = (ROOT / "docs/damping.md").read_text()
+    files["docs/damping.md"] = docs.replace_between(
+        damping, "maps", docs.parameter_maps(index, "c"), "docs/damping.md"
+    )
     readme = (ROOT / "README.md").read_text()
     readme = docs.replace_between(readme, "equations", render_equation_summary())
     readme = docs.replace_between(readme, "maps", docs.readme_maps_table(index))

@@ -315,14 +315,20 @@ class MapSpec(Declaration):
         """The map's stiffness parameters (``k``, or ``k_c`` and ``k_d``), in argument order."""
         return tuple(a.name for a in self.param_args() if a.name in ("k", "k_c", "k_d"))
 
+    def differentiated(self) -> tuple[str, ...]:
+        """The parameters the Jacobians have columns for: the stiffness, and the leg damping ``c``
+        when the map takes it."""
+        return self.stiffness() + tuple(p for p in ("c",) if p in self.params)
+
     def stance_wrt(self) -> tuple[str, ...]:
-        """What the stance Jacobian differentiates with respect to: the touchdown state, the stiffness."""
-        return tuple(a.name for a in catalog.TOUCHDOWN) + self.stiffness()
+        """What the stance Jacobian differentiates with respect to: the touchdown state, the stiffness
+        (and the damping, :meth:`differentiated`)."""
+        return tuple(a.name for a in catalog.TOUCHDOWN) + self.differentiated()
 
     def apex_wrt(self) -> tuple[str, ...]:
         """What the apex-return Jacobian differentiates with respect to: apex height and speed,
-        touchdown angle, ground, the stiffness."""
-        return tuple(a.name for a in catalog.APEX_ARGS) + self.stiffness()
+        touchdown angle, ground, the stiffness (and the damping, :meth:`differentiated`)."""
+        return tuple(a.name for a in catalog.APEX_ARGS) + self.differentiated()
 
     def jacobian_kernels(self, diff: Differentiator, flight_kernels: Mapping[str, Kernel]) -> None:
         """Declare ``<ident>_stance_jacobian`` and ``<ident>_apex_return_jacobian`` (role kernels of

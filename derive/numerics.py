@@ -178,7 +178,8 @@ def dop853() -> dict:
 
 def exact_stance() -> dict:
     """The data of ``exact_stance.py.j2``: the stance row's columns, the polar order, the Jacobian's
-    inputs (the touchdown state, then k_c and k_d) and the simulator's settings."""
+    inputs (the touchdown state, then k_c, k_d and c: derive/maps/exact.py), the codes of its option
+    ``liftoff`` and the simulator's settings."""
     from . import catalog
     from .model import simulation
 
@@ -189,7 +190,8 @@ def exact_stance() -> dict:
         j = names.index(groups[group][0])
         if names[j : j + len(polar)] != groups[group]:
             raise RuntimeError(f"the stance row's {group} state is not contiguous in {names}")
-    touchdown = tuple(a.name for a in catalog.TOUCHDOWN)
+    from .maps import exact
+
     return {
         "stance_names": names,
         "polar": polar,
@@ -197,7 +199,9 @@ def exact_stance() -> dict:
         "t_stance": names.index("t_stance"),
         "bottom": names.index(groups["bottom"][0]),
         "liftoff": names.index(groups["liftoff"][0]),
-        "inputs": (*touchdown, "k_c", "k_d"),
+        "inputs": exact.JACOBIAN_INPUTS,
+        "liftoff_force": exact.LIFTOFF.code("force"),
+        "liftoff_length": exact.LIFTOFF.code("length"),
         "collapse_fraction": repr(simulation.COLLAPSE_FRACTION),
         "cap_rtol": repr(simulation.DEFAULT_RTOL),
     }

@@ -18,6 +18,10 @@ Domains (the checks both the kernels and the Python layer make):
 - ``leg_angle``: finite and |x| < pi/2 (the leg above the ground);
 - ``real``: finite.
 
+A row with ``unmodelled`` is a parameter that only some maps model (those that declare it in their
+``params``): a map that does not declare it assumes that value, and the Python layer refuses any
+other for it (``runtime/api/index.py``: ``MapInfo.check_params``), naming the maps that take it.
+
 An input's row may also hold a ``limit`` that depends on the parameters, ``{"sqrt_ratio": (a, b),
 "why": ...}``: ``|x| <= sqrt(a / b)`` of parameters ``a`` and ``b`` (the retraction rate's
 ``sqrt(g_f/q_r_td)``). The kernel that needs it guards it (``INVALID_INPUT``:
@@ -65,6 +69,14 @@ PARAMETERS: tuple[dict, ...] = (
     },
     {"name": "q_r_td", "doc": "touchdown leg length", "unit": "m", "default": "l0", "domain": "leg_length"},
     {"name": "q_r_lo", "doc": "liftoff leg length", "unit": "m", "default": "l0", "domain": "leg_length"},
+    {
+        "name": "c",
+        "doc": "leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg)",
+        "unit": "N s/m",
+        "default": 0.0,
+        "domain": "non_negative",
+        "unmodelled": 0.0,
+    },
 )
 
 #: Parameters that set others: ``k``, a constant stiffness (k_c = k_d = k), the kernel argument of

@@ -15,6 +15,8 @@ t = sp.Symbol("t", real=True)
 
 # Parameters (Table 1).
 m, l0, k, k_c, k_d, g_s, g_f = sp.symbols("m l0 k k_c k_d g_s g_f", positive=True)
+# Leg damping (not in the report: the lossy leg's radial force -c q_rd), non-negative.
+c = sp.Symbol("c", nonnegative=True)
 
 # Polar stance coordinates as functions of time (for the Lagrangian derivation).
 q_r_t = sp.Function("q_r", positive=True)(t)

@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
-#   exact_stance.py sha256:e366a5af658bf7f9
+#   exact_stance.py sha256:ffbd69c8753c546e
 #   flight.py sha256:af908ea30b1fc141
 # ----------------------------------------------------------------------------------------------
 """Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return
@@ -36,8 +36,8 @@ def exact_stance(x, p, out):
     Report equations: 1, 2, 3, 27.
 
     Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol); writes the outputs below into out, in order,
-    and returns
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, rtol, atol, liftoff); writes the outputs below into
+    out, in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -50,9 +50,12 @@ def exact_stance(x, p, out):
         k_c: leg stiffness while compressing k_c [N/m], > 0
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Writes into out:
         t_bottom: time from touchdown to the bottom [s]
@@ -70,15 +73,16 @@ def exact_stance(x, p, out):
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9)
+    (m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff,) = load(p, 0, 1, 2, 3, 4, 8, 7, 9, 10, 11)
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,))
-            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol,
+            liftoff,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0))
+            & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0)) & ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol
+            <= 0.001)) & ((liftoff == 0.0) or (liftoff == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact stance (exact_stance)
-    _c0 = stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)
+    _c0 = stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff)
     if _c0[10] != STATUS_OK:
         return fail(out, _c0[10])
     t_bottom = _c0[0]
@@ -103,9 +107,9 @@ def exact_stance(x, p, out):
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_stance_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(10), 10)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(12), 12)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = exact_stance(row(X, i), p, row(OUT, i))
 
@@ -117,8 +121,8 @@ def exact_state_at(x, p, out):
     Report equations: 1, 2, 3, 27.
 
     Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol); writes the outputs below into out, in order,
-    and returns
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, rtol, atol, liftoff); writes the outputs below into
+    out, in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -132,9 +136,12 @@ def exact_state_at(x, p, out):
         k_c: leg stiffness while compressing k_c [N/m], > 0
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Writes into out:
         q_r: leg length [m]
@@ -146,16 +153,17 @@ def exact_state_at(x, p, out):
     """
     # Total ops: 0
     (t, q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3, 4)
-    (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9)
+    (m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol, liftoff,) = load(p, 0, 1, 2, 3, 4, 8, 7, 9, 10, 11)
     # inputs: finite and inside their domains
-    if not (all_finite((t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,))
-            & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
-            > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol
-            <= 0.001))):
+    if not (all_finite((t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol,
+            liftoff,)) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16)
+            and (atol <= 0.001)) & ((liftoff == 0.0) or (liftoff == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact state at t (exact_stance)
-    _c0 = state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)
+    _c0 = (state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, c, q_r_lo, rtol, atol,
+        liftoff))
     if _c0[4] != STATUS_OK:
         return fail(out, _c0[4])
     q_r = _c0[0]
@@ -173,9 +181,9 @@ def exact_state_at(x, p, out):
 def exact_state_at_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(10), 10)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(12), 12)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = exact_state_at(row(X, i), p, row(OUT, i))
 
@@ -187,8 +195,8 @@ def exact_apex_return(x, p, out):
     Report equations: 1, 2, 3, 27.
 
     Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol); writes the outputs below into out, in order,
-    and returns
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, rtol, atol, liftoff); writes the outputs below into
+    out, in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -207,11 +215,14 @@ def exact_apex_return(x, p, out):
         k_c: leg stiffness while compressing k_c [N/m], > 0
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -233,13 +244,15 @@ def exact_apex_return(x, p, out):
     """
     # Total ops: 3
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9)
+    (m, l0, k_c, k_d, g_s, c, g_f, q_r_td, q_r_lo, rtol, atol, liftoff,) = (load(p, 0, 1, 2, 3, 4, 8, 5, 6, 7,
+        9, 10, 11))
     # inputs: finite and inside their domains
-    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
-            q_r_td, q_r_lo, rtol, atol,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
-            > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0)) & ((q_r_td
-            <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol
-            <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, c, g_f,
+            q_r_td, q_r_lo, rtol, atol, liftoff,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
+            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0))
+            & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001)) & ((liftoff
+            == 0.0) or (liftoff == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -286,8 +299,8 @@ def exact_apex_return(x, p, out):
 def exact_apex_return_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(10), 10)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(12), 12)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = exact_apex_return(row(X, i), p, row(OUT, i))

@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
-#   exact_stance.py sha256:e366a5af658bf7f9
+#   exact_stance.py sha256:ffbd69c8753c546e
 # ----------------------------------------------------------------------------------------------
 """Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->
 bottom."""
@@ -34,7 +34,7 @@ def exact_compression(x, p, out):
     Report equations: 2, 3.
 
     Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, g_s, q_r_lo, rtol, atol); writes the outputs below into out, in order, and returns
+    p = (m, l0, k_c, g_s, q_r_lo, c, rtol, atol); writes the outputs below into out, in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -47,6 +47,7 @@ def exact_compression(x, p, out):
         k_c: leg stiffness while compressing k_c [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
 
@@ -61,15 +62,15 @@ def exact_compression(x, p, out):
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_c, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6)
+    (m, l0, k_c, g_s, q_r_lo, c, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7)
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol,)) & ((q_r_td
-            <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c
-            > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol
-            <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, c, rtol, atol,))
+            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
+            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((c >= 0.0))
+            & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact half (exact_stance)
-    _c0 = compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol)
+    _c0 = compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, c, rtol, atol)
     if _c0[5] != STATUS_OK:
         return fail(out, _c0[5])
     t_half = _c0[0]
@@ -88,8 +89,8 @@ def exact_compression(x, p, out):
 def exact_compression_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_compression` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = exact_compression(row(X, i), p, row(OUT, i))

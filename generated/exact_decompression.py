@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
-#   exact_stance.py sha256:e366a5af658bf7f9
+#   exact_stance.py sha256:ffbd69c8753c546e
 #   flight.py sha256:af908ea30b1fc141
 # ----------------------------------------------------------------------------------------------
 """Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom ->
@@ -36,7 +36,8 @@ def exact_decompression(x, p, out):
     Report equations: 2, 3.
 
     Role kernel: reads x = (q_r_b, q_rd_b, q_th_b, q_thd_b) and the parameter record
-    p = (m, l0, k_d, g_s, q_r_lo, rtol, atol); writes the outputs below into out, in order, and returns
+    p = (m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff); writes the outputs below into out, in order, and
+    returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -49,8 +50,11 @@ def exact_decompression(x, p, out):
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Writes into out:
         t_half: time from the start state to the end state [s]
@@ -63,15 +67,15 @@ def exact_decompression(x, p, out):
     """
     # Total ops: 0
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_d, g_s, q_r_lo, rtol, atol,) = load(p, 0, 1, 2, 3, 4, 5, 6)
+    (m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8)
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol,)) & ((q_r_b
-            > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s
-            > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol
-            >= 1e-16) and (atol <= 0.001))):
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff,))
+            & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0))
+            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((c >= 0.0)) & ((rtol >= 1e-14) and (rtol
+            <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001)) & ((liftoff == 0.0) or (liftoff == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the exact half (exact_stance)
-    _c0 = decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol)
+    _c0 = decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff)
     if _c0[5] != STATUS_OK:
         return fail(out, _c0[5])
     t_half = _c0[0]
@@ -90,9 +94,9 @@ def exact_decompression(x, p, out):
 def exact_decompression_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_decompression` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(9), 9)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = exact_decompression(row(X, i), p, row(OUT, i))
 
@@ -105,7 +109,8 @@ def exact_decompression_apex(x, p, out):
     Report equations: 2, 3.
 
     Role kernel: reads x = (q_r_b, q_rd_b, q_th_b, q_thd_b) and the parameter record
-    p = (m, l0, k_d, g_s, g_f, q_r_lo, rtol, atol); writes the outputs below into out, in order, and returns
+    p = (m, l0, k_d, g_s, g_f, q_r_lo, c, rtol, atol, liftoff); writes the outputs below into out, in order,
+    and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -118,8 +123,11 @@ def exact_decompression_apex(x, p, out):
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
 
     Writes into out:
@@ -136,18 +144,19 @@ def exact_decompression_apex(x, p, out):
     """
     # Total ops: 8
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_d, g_s, q_r_lo, rtol, atol, g_f,) = load(p, 0, 1, 2, 3, 5, 6, 7, 4)
+    (m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff, g_f,) = load(p, 0, 1, 2, 3, 5, 6, 7, 8, 9, 4)
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol, g_f,)) & ((q_r_b
-            > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s
-            > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((rtol >= 1e-14) and (rtol <= 0.001)) & ((atol
-            >= 1e-16) and (atol <= 0.001)) & ((g_f > 0.0))):
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff, g_f,
+            )) & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d
+            > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((c >= 0.0)) & ((rtol >= 1e-14)
+            and (rtol <= 0.001)) & ((atol >= 1e-16) and (atol <= 0.001)) & ((liftoff == 0.0) or (liftoff
+            == 1.0)) & ((g_f > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the half: Exact decompression half (bottom to liftoff, k_d; DOP853 integration)
     _x0 = carray(stack(4), 4)
     store(_x0, (q_r_b, q_rd_b, q_th_b, q_thd_b,))
-    _p0 = carray(stack(7), 7)
-    store(_p0, (m, l0, k_d, g_s, q_r_lo, rtol, atol,))
+    _p0 = carray(stack(9), 9)
+    store(_p0, (m, l0, k_d, g_s, q_r_lo, c, rtol, atol, liftoff,))
     _o0 = carray(stack(5), 5)
     _c0 = exact_decompression(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -177,8 +186,8 @@ def exact_decompression_apex(x, p, out):
 def exact_decompression_apex_rows(X, P, OUT, STATUS):
     """Rows of :func:`exact_decompression_apex` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(10), 10)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = exact_decompression_apex(row(X, i), p, row(OUT, i))

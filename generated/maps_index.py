@@ -476,31 +476,38 @@ _repeated37 = {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
     'absolute tolerance of the DOP853 integration', 'choices': [], 'low': 1e-16, 'high': 0.001,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
 
-_repeated38 = [_repeated36, _repeated37]
+_repeated38 = [{'value': 'force', 'doc':
+    'where the leg force k_d (l0 - q_r) - c q_rd falls to 0, or at q_r = q_r_lo if first'}, {'value':
+    'length', 'doc': "at q_r = q_r_lo (the leg's pull on the ground ignored)"}]
+
+_repeated39 = {'name': 'liftoff', 'kind': 'choice', 'default': 'force', 'doc':
+    'where a damped leg lifts off (the same liftoff at c = 0)', 'choices': _repeated38, 'low': None, 'high':
+    None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
 
 HALVES = [{'name': 'exact-compression', 'title':
     'Exact compression half (touchdown to bottom, k_c; DOP853 integration)', 'section': '2.2', 'equations': [
-    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo'], 'options': _repeated38, 'module':
-    'exact_compression', 'summary':
+    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo', 'c'], 'options': [_repeated36, _repeated37],
+    'module': 'exact_compression', 'summary':
     "the exact stance's compression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'touchdown', 'end': 'bottom',
     'requires': [], 'kernels': {'half': {'module': 'exact_compression', 'name': 'exact_compression', 'x': [
-    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo', 'rtol', 'atol'],
-    'out': ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd']}}}, {'name': 'exact-decompression',
-    'title': 'Exact decompression half (bottom to liftoff, k_d; DOP853 integration)', 'section': '2.2',
-    'equations': ['2', '3'], 'params': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': _repeated38, 'module':
-    'exact_decompression', 'summary':
+    'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo', 'c', 'rtol',
+    'atol'], 'out': ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd']}}}, {'name':
+    'exact-decompression', 'title': 'Exact decompression half (bottom to liftoff, k_d; DOP853 integration)',
+    'section': '2.2', 'equations': ['2', '3'], 'params': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo', 'c'], 'options':
+    [_repeated36, _repeated37, _repeated39], 'module': 'exact_decompression', 'summary':
     "the exact stance's decompression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'bottom', 'end': 'liftoff',
     'requires': [], 'kernels': {'half': {'module': 'exact_decompression', 'name': 'exact_decompression', 'x':
-    ['q_r_b', 'q_rd_b', 'q_th_b', 'q_thd_b'], 'p': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo', 'rtol', 'atol'], 'out':
-    ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd']}, 'apex': {'module': 'exact_decompression',
-    'name': 'exact_decompression_apex', 'x': ['q_r_b', 'q_rd_b', 'q_th_b', 'q_thd_b'], 'p': ['m', 'l0', 'k_d',
-    'g_s', 'g_f', 'q_r_lo', 'rtol', 'atol'], 'out': ['apex_height', 'apex_speed', 't_half', 't_ascent',
-    'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']}}}, {'name': 'iterative-compression',
-    'title': 'Iterative compression half (touchdown to bottom, k_c; converging form)', 'section': '5.2.1',
-    'equations': ['29', '30', '31', '32', '114', '115', '116', '117', '118', '123'], 'params': ['m', 'l0',
-    'k_c', 'g_s'], 'options': _repeated33, 'module': 'iterative_compression', 'summary':
+    ['q_r_b', 'q_rd_b', 'q_th_b', 'q_thd_b'], 'p': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo', 'c', 'rtol', 'atol',
+    'liftoff'], 'out': ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd']}, 'apex': {'module':
+    'exact_decompression', 'name': 'exact_decompression_apex', 'x': ['q_r_b', 'q_rd_b', 'q_th_b', 'q_thd_b'],
+    'p': ['m', 'l0', 'k_d', 'g_s', 'g_f', 'q_r_lo', 'c', 'rtol', 'atol', 'liftoff'], 'out': ['apex_height',
+    'apex_speed', 't_half', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']}}}, {
+    'name': 'iterative-compression', 'title':
+    'Iterative compression half (touchdown to bottom, k_c; converging form)', 'section': '5.2.1', 'equations':
+    ['29', '30', '31', '32', '114', '115', '116', '117', '118', '123'], 'params': ['m', 'l0', 'k_c', 'g_s'],
+    'options': _repeated33, 'module': 'iterative_compression', 'summary':
     'the compression half of `iterative`: bottom leg length from the radial work, Picard passes on '
     'Gauss nodes in u', 'roles': [], 'specialized': ['zeroth'], 'choices': _repeated12, 'extras': [{'name':
     'passes', 'doc': 'Picard passes run', 'unit': '1', 'odd': False}], 'whole': 'iterative', 'start':
@@ -551,30 +558,30 @@ HALVES = [{'name': 'exact-compression', 'title':
     't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']}}}]
 
 EXACT = {'name': 'exact', 'title': 'Exact stance by numerical integration (DOP853)', 'section': '2.2',
-    'equations': ['1', '2', '3', '27'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s'], 'options': [{'name':
+    'equations': ['1', '2', '3', '27'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'c'], 'options': [{'name':
     'method', 'kind': 'choice', 'default': 'compiled', 'doc':
     'which DOP853 implementation integrates the stance (same algorithm, events and statuses)', 'choices': [{
     'value': 'compiled', 'doc': 'numba-compiled, batches in parallel'}, {'value': 'scipy', 'doc':
     "scipy's solve_ivp, the reference"}], 'low': None, 'high': None, 'at_rest_length': [], 'kernel': False,
     'specialize': False, 'backends': {'scipy': 'slipmaps.runtime.exact.reference'}, 'roles': []}, _repeated36,
-    _repeated37], 'module': 'exact', 'summary':
+    _repeated37, _repeated39], 'module': 'exact', 'summary':
     'the polar stance equations of motion (2)-(3) integrated with events for the bottom (k_c -> k_d), '
     'liftoff and failures: the ground truth', 'roles': [], 'specialized': [], 'choices': {}, 'extras': [],
     'requires': [], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':
     'exact', 'name': 'exact_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': _repeated0}, 'apex_return': {
-    'module': 'exact', 'name': 'exact_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'],
-    'out': _repeated1}, 'state_at': {'module': 'exact', 'name': 'exact_state_at', 'x': ['t', 'q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo',
-    'rtol', 'atol'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']}, 'stance_jacobian': {'module': 'exact_jacobian',
-    'name': 'exact_stance_jacobian', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'], 'out': _repeated0, 'wrt': ['q_r_td',
-    'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']}, 'apex_return_jacobian': {'module': 'exact_jacobian',
-    'name': 'exact_apex_return_jacobian', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'rtol', 'atol'],
-    'out': _repeated1, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c',
-    'k_d']}}, 'fixed': {}}
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'c', 'rtol', 'atol', 'liftoff'], 'out': _repeated0},
+    'apex_return': {'module': 'exact', 'name': 'exact_apex_return', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td',
+    'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'c',
+    'rtol', 'atol', 'liftoff'], 'out': _repeated1}, 'state_at': {'module': 'exact', 'name': 'exact_state_at',
+    'x': ['t', 'q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'c', 'rtol', 'atol', 'liftoff'], 'out': ['q_r', 'q_rd', 'q_th', 'q_thd']},
+    'stance_jacobian': {'module': 'exact_jacobian', 'name': 'exact_stance_jacobian', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'c',
+    'rtol', 'atol', 'liftoff'], 'out': _repeated0, 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c',
+    'k_d', 'c']}, 'apex_return_jacobian': {'module': 'exact_jacobian', 'name': 'exact_apex_return_jacobian',
+    'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d',
+    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'c', 'rtol', 'atol', 'liftoff'], 'out': _repeated1, 'wrt': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d', 'c']}}, 'fixed': {}}
 
 MODEL = {'apex_to_touchdown': {'module': 'model', 'name': 'apex_to_touchdown_entry', 'x': ['b_y_apex',
     'b_xd_apex', 'q_th_td', 'q_r_td', 'g_f', 'ground', 'retraction_rate'], 'p': [], 'out': ['touchdown_q_r',

@@ -9,7 +9,7 @@
 #   support.py sha256:4a3d44d95d3e4300
 #   flight.py sha256:af908ea30b1fc141
 #   geyer_vs.py sha256:ef01b987d9b927b3
-#   slip_model.py sha256:8dd852be8d841fbc
+#   slip_model.py sha256:4cc44e1baaa041ba
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
 

@@ -131,6 +131,62 @@ def stance_polar_tangent(q_r, q_rd, q_th, q_thd, s_q_r, s_q_rd, s_q_th, s_q_thd,
 
 
 @njit(cache=True, error_model="numpy")
+def stance_polar_damping(q_r, q_rd, q_th, q_thd, m, c):
+    """The leg damper's term of the polar stance field: the damped field minus the lossless one.
+
+    Report equations: sec2.2.1-damped.
+
+    Arguments:
+        q_r: leg length q_r [m]
+        q_rd: leg length rate q_rd [m/s]
+        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate q_thd [rad/s]
+        m: body mass m [kg], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
+
+    Returns a tuple:
+        damping_q_r: the damper's term of dq_r/dt [m/s]
+        damping_q_rd: the damper's term of dq_rd/dt [m/s^2]
+        damping_q_th: the damper's term of dq_th/dt [rad/s]
+        damping_q_thd: the damper's term of dq_thd/dt [rad/s^2]
+    """
+    # Total ops: 3
+    damping_q_rd = -c*q_rd/m
+    return (0.0, damping_q_rd, 0.0, 0.0)
+
+
+@njit(cache=True, error_model="numpy")
+def stance_polar_damping_tangent(q_r, q_rd, q_th, q_thd, s_q_r, s_q_rd, s_q_th, s_q_thd, s_c, m, c):
+    """The leg damper's term of the variational equations: J_D dy/dw + (dD/dc) dc/dw.
+
+    Report equations: sec2.2.1-damped.
+
+    Arguments:
+        q_r: leg length q_r [m]
+        q_rd: leg length rate q_rd [m/s]
+        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate q_thd [rad/s]
+        s_q_r: dq_r/dw, the state's sensitivity to an input w [m per unit of w]
+        s_q_rd: dq_rd/dw, the state's sensitivity to an input w [m/s per unit of w]
+        s_q_th: dq_th/dw, the state's sensitivity to an input w [rad per unit of w]
+        s_q_thd: dq_thd/dw, the state's sensitivity to an input w [rad/s per unit of w]
+        s_c: dc/dw, the damping's sensitivity to w (1 for w = c, else 0) [N s/m per unit of w]
+        m: body mass m [kg], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
+
+    Returns a tuple:
+        ds_q_r: the damper's term of d/dt of dq_r/dw [m/s per unit of w]
+        ds_q_rd: the damper's term of d/dt of dq_rd/dw [m/s^2 per unit of w]
+        ds_q_th: the damper's term of d/dt of dq_th/dw [rad/s per unit of w]
+        ds_q_thd: the damper's term of d/dt of dq_thd/dw [rad/s^2 per unit of w]
+    """
+    # Total ops: 7
+    _x0 = (1.0/m)
+    ds_q_rd = -_x0*c*s_q_rd - _x0*q_rd*s_c
+    return (0.0, ds_q_rd, 0.0, 0.0)
+
+
+@njit(cache=True, error_model="numpy")
 def stance_cartesian_rhs(b_x, b_xd, b_y, b_yd, m, l0, k, g_s):
     """Cartesian stance vector field d/dt (b_x, b_xd, b_y, b_yd), toe at the origin on flat ground.
 

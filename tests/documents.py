@@ -20,6 +20,7 @@ DOCUMENTS = (
     "docs/layout.md",
     "docs/adding_a_map.md",
     "docs/design.md",
+    "docs/damping.md",
 )
 
 

@@ -8,6 +8,7 @@ about 30x above the discrepancy measured over its cases (the comment gives the m
 
 from __future__ import annotations
 
+import inspect
 import math
 
 import numpy as np
@@ -149,11 +150,11 @@ def _compressions(field, tds, p: SlipParams):
         from slipmaps.generated import dop853
 
         @njit
-        def run(field, tds, p4, pe, direction, cap, out):
+        def run(field, tds, p5, pe, direction, cap, out):
             for i in range(tds.shape[0]):
                 y_end = np.empty(4)
                 code, t_end, event, steps, evaluations = dop853.solve(
-                    field, p4, ec.stance_events, pe, direction, 0.0, tds[i], 10.0, 1e-11, 1e-12, cap,
+                    field, p5, ec.stance_events, pe, direction, 0.0, tds[i], 10.0, 1e-11, 1e-12, cap,
                     4, y_end, math.inf, y_end, dop853.GOES_ON,
                 )  # fmt: skip
                 out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4] = code, t_end, event, steps, evaluations
@@ -162,10 +163,11 @@ def _compressions(field, tds, p: SlipParams):
         _SOLVE["run"] = run
         _SOLVE["loops"] = njit(ec.polar_field.py_func)  # a second dispatcher: not registered
     out = np.empty((len(tds), 9))
-    pe = (p.q_r_lo, ec.COLLAPSE_FRACTION * p.l0)
+    pe = ec.event_record(ec.Stance(p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo, 1e-11, 1e-12, 10.0, p.c))
     cap = ec.step_cap(p.m, p.l0, p.k_c, p.g_s, 1e-11)
     field = _SOLVE["loops"] if field is None else field
-    _SOLVE["run"](field, tds, (p.m, p.l0, p.k_c, p.g_s), pe, np.array(ec.COMPRESSION_DIRECTIONS), cap, out)
+    p5 = (p.m, p.l0, p.k_c, p.g_s, p.c)
+    _SOLVE["run"](field, tds, p5, pe, np.array(ec.COMPRESSION_DIRECTIONS), cap, out)
     return out
 
 
@@ -307,16 +309,30 @@ def test_method_option_defaults_to_compiled_and_scipy_is_the_reference():
 # ----------------------------------------------------------------------------------------------
 # 5. The external kernels (generated/exact_stance.py): the halves and the state at a time
 # ----------------------------------------------------------------------------------------------
+#: The code of the default liftoff option (the leg force's zero; at c = 0 the same stance as q_r_lo).
+FORCE = float(ek.LIFTOFF_FORCE)
+
+
 def _args(p: SlipParams) -> tuple[float, ...]:
     """kernels.stance / state_at's parameters after the touchdown state."""
-    return (p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL)
+    return (p.m, p.l0, p.k_c, p.k_d, p.g_s, p.c, p.q_r_lo, RTOL, ATOL, FORCE)
+
+
+def _compression_args(p: SlipParams) -> tuple[float, ...]:
+    """kernels.compression's parameters after the touchdown state."""
+    return (p.m, p.l0, p.k_c, p.g_s, p.q_r_lo, p.c, RTOL, ATOL)
+
+
+def _decompression_args(p: SlipParams) -> tuple[float, ...]:
+    """kernels.decompression's parameters after the bottom state."""
+    return (p.m, p.l0, p.k_d, p.g_s, p.q_r_lo, p.c, RTOL, ATOL, FORCE)
 
 
 def _halves(p: SlipParams, td) -> tuple[tuple, tuple | None]:
-    down = ek.compression(*td, p.m, p.l0, p.k_c, p.g_s, p.q_r_lo, RTOL, ATOL)
+    down = ek.compression(*td, *_compression_args(p))
     if down[-1] != Status.OK:
         return down, None
-    return down, ek.decompression(*down[1:5], p.m, p.l0, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL)
+    return down, ek.decompression(*down[1:5], *_decompression_args(p))
 
 
 def _step_touchdown(p: SlipParams, height: float, speed: float, angle: float) -> tuple[float, ...]:
@@ -398,15 +414,12 @@ def test_halves_split_the_stance_checks_at_the_bottom():
         ((1.0, 0.0, 0.3, -4.0), Status.TOUCHDOWN_NOT_COMPRESSING),
         ((0.5 * sim.COLLAPSE_FRACTION, -1.0, 0.3, -4.0), Status.FALL),
     ):
-        assert ek.compression(*td, p.m, p.l0, p.k_c, p.g_s, p.q_r_lo, RTOL, ATOL)[-1] == status
+        assert ek.compression(*td, *_compression_args(p))[-1] == status
         assert ek.stance(*td, *_args(p))[-1] == status
     # q_rd_b is not read by the decompression (0 at the bottom).
     down, _ = _halves(p, _step_touchdown(p, 1.0, 5.0, 0.35))
     q_r, _, q_th, q_thd = down[1:5]
-    ups = {
-        ek.decompression(q_r, q_rd, q_th, q_thd, p.m, p.l0, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL)
-        for q_rd in (0.0, -3.0, 5.0)
-    }
+    ups = {ek.decompression(q_r, q_rd, q_th, q_thd, *_decompression_args(p)) for q_rd in (0.0, -3.0, 5.0)}
     assert len(ups) == 1 and next(iter(ups))[-1] == Status.OK
 
 
@@ -467,9 +480,9 @@ def test_state_at_has_the_stance_status():
 
 
 def _jacobian_tuple(*args):
-    """The external stance Jacobian (it writes its 70 values into an array, derive/lower.py's abi)
-    as a tuple of its values and the status, like the other external kernels."""
-    out = np.empty(70)
+    """The external stance Jacobian (it writes its values and the Jacobian into an array, derive/lower.py's
+    abi) as a tuple of its values and the status, like the other external kernels."""
+    out = np.empty(ek.N_STANCE * (1 + ek.N_IN))
     code = ek.stance_jacobian(*args, out)
     return (*out, code)
 
@@ -477,25 +490,26 @@ def _jacobian_tuple(*args):
 def test_external_kernels_refuse_invalid_inputs():
     p = HUMAN_RUNNER
     td = (0.99, -1.5, 0.35, -4.5)
-    bottom = ek.compression(*td, p.m, p.l0, p.k_c, p.g_s, p.q_r_lo, RTOL, ATOL)[1:5]
-    params_c = (p.m, p.l0, p.k_c, p.g_s, p.q_r_lo, RTOL, ATOL)
-    params_d = (p.m, p.l0, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL)
+    bottom = ek.compression(*td, *_compression_args(p))[1:5]
     calls = {
         "stance": (ek.stance, (*td, *_args(p))),
         "stance_jacobian": (_jacobian_tuple, (*td, *_args(p))),
-        "compression": (ek.compression, (*td, *params_c)),
-        "decompression": (ek.decompression, (*bottom, *params_d)),
+        "compression": (ek.compression, (*td, *_compression_args(p))),
+        "decompression": (ek.decompression, (*bottom, *_decompression_args(p))),
         "state_at": (ek.state_at, (0.05, *td, *_args(p))),
     }
     for name, (kernel, args) in calls.items():
+        names = list(inspect.signature(getattr(ek, name).py_func).parameters)
+        at = {a: names.index(a) for a in ("m", "q_r_lo", "c", "rtol", "atol")}
         assert kernel(*args)[-1] == Status.OK, name
         state = 1 if name == "state_at" else 0  # the first argument of the state
         bad = [(i, x) for i in range(len(args)) for x in (math.nan, math.inf, -math.inf)]
         bad += [(state, 0.0), (state, 1.2 * p.l0), (state, -0.5)]  # q_r outside (0, l0]
         bad += [(state + 2, math.pi / 2), (state + 2, -2.0)]  # |q_th| >= pi/2
-        n = len(args)
-        bad += [(n - 8 if name in ("stance", "stance_jacobian", "state_at") else n - 7, 0.0)]  # m = 0
-        bad += [(n - 2, 0.0), (n - 1, -1e-12), (n - 3, 1.1 * p.l0)]  # rtol, atol; q_r_lo > l0
+        bad += [(at["m"], 0.0), (at["rtol"], 0.0), (at["atol"], -1e-12), (at["q_r_lo"], 1.1 * p.l0)]
+        bad += [(at["c"], -1e-9)]  # a negative damping
+        if "liftoff" in names:
+            bad += [(names.index("liftoff"), 2.0), (names.index("liftoff"), 0.5)]  # not a choice's code
         if name == "state_at":
             bad += [(0, -1e-9), (0, 2.0 * sim.default_t_max(p))]  # t outside [0, t_max]
         for i, x in bad:
@@ -550,7 +564,7 @@ def test_every_exact_kernel_is_mirror_symmetric():
         args = _args(p)
         stance = ek.stance(*td, *args)
         worst = max(worst, _mirrored(ek.stance(*mirror, *args), stance, MIRROR_STANCE))
-        c_args, d_args = (p.m, p.l0, p.k_c, p.g_s, *args[-3:]), (p.m, p.l0, p.k_d, p.g_s, *args[-3:])
+        c_args, d_args = _compression_args(p), _decompression_args(p)
         down = ek.compression(*td, *c_args)
         down_m = ek.compression(*mirror, *c_args)
         worst = max(worst, _mirrored(down_m, down, MIRROR_HALF))

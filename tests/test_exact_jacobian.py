@@ -3,9 +3,12 @@ the variational equations of (2)-(3) with saltation matrices at the bottom (k_c 
 liftoff, against central differences of the compiled simulator itself (generated/exact_stance.py).
 
 Central-difference step: h = 1e-5 times each input's scale (l0, sqrt(g_s l0), 1 rad, sqrt(g_s/l0),
-k_c, k_d), the best of 1e-4 ... 1e-7 measured on every case below (truncation error ~ h^2 above,
+k_c, k_d, and for the damping c its critical value 2 sqrt(k_c m)), the best of 1e-4 ... 1e-7
+measured on every case below (truncation error ~ h^2 above,
 the integrator's round-off ~ 3e-15 / h below). Error measure: per input column, max |FD - J| over
-the 10 outputs divided by the column's largest |J|.
+the 10 outputs divided by the column's largest |J|. The damping's column with c > 0 (and at c = 0,
+a one-sided derivative) is tested in test_damping.py; here every case has c = 0 and its c column
+is skipped (c - h is outside the domain).
 """
 
 from __future__ import annotations
@@ -52,9 +55,9 @@ CASES = [
 ]
 
 
-def _outputs(p: SlipParams, w: np.ndarray) -> np.ndarray:
-    stiffness = p.with_(k_c=w[ej.K_C], k_d=w[ej.K_D])
-    res = slipmaps.stance("exact", stiffness, w[: ej.N_POLAR])
+def stance_outputs(p: SlipParams, w: np.ndarray, **options) -> np.ndarray:
+    stiffness = p.with_(k_c=w[ej.K_C], k_d=w[ej.K_D], c=w[ej.C])
+    res = slipmaps.stance("exact", stiffness, w[: ej.N_POLAR], **options)
     assert res.status == Status.OK
     return np.array([res.values[n] for n in ej.STANCE_NAMES])
 
@@ -64,17 +67,32 @@ def test_jacobian_matches_central_differences(params, touchdown):
     jac = slipmaps.stance_jacobian("exact", params, touchdown)
     assert jac.status == Status.OK
     p = params
-    w0 = np.array([*touchdown, p.k_c, p.k_d])
-    scale = np.array([p.l0, math.sqrt(p.g_s * p.l0), 1.0, math.sqrt(p.g_s / p.l0), p.k_c, p.k_d])
-    columns = range(1, ej.N_IN) if touchdown[0] >= p.l0 else range(ej.N_IN)
+    w0 = np.array([*touchdown, p.k_c, p.k_d, p.c])
+    columns = [j for j in range(ej.N_IN) if not (j == 0 and touchdown[0] >= p.l0) and j != ej.C]
+    worst = worst_column_error(p, w0, jac.matrix, columns)
+    # Measured over CASES: 2.1e-10 to 1.0e-9 (at h = 1e-4: up to 1.5e-7; at 1e-7: up to 1.4e-7).
+    assert worst < 3e-8, worst
+
+
+def _scale(p: SlipParams) -> np.ndarray:
+    """Each input's scale (module docstring), in :data:`ej.INPUTS` order."""
+    critical = 2.0 * math.sqrt(p.k_c * p.m)
+    return np.array([p.l0, math.sqrt(p.g_s * p.l0), 1.0, math.sqrt(p.g_s / p.l0), p.k_c, p.k_d, critical])
+
+
+def worst_column_error(p: SlipParams, w0: np.ndarray, matrix: np.ndarray, columns, **options) -> float:
+    """The largest, over ``columns``, max |central difference - J| / max |J| of the column (the
+    stance with ``options``)."""
+    scale = _scale(p)
     worst = 0.0
     for j in columns:
         step = np.zeros(ej.N_IN)
         step[j] = FD_STEP * scale[j]
-        fd = (_outputs(p, w0 + step) - _outputs(p, w0 - step)) / (2 * step[j])
-        worst = max(worst, float(np.max(np.abs(fd - jac.matrix[:, j])) / np.max(np.abs(jac.matrix[:, j]))))
-    # Measured over CASES: 2.1e-10 to 1.0e-9 (at h = 1e-4: up to 1.5e-7; at 1e-7: up to 1.4e-7).
-    assert worst < 3e-8, worst
+        fd = (stance_outputs(p, w0 + step, **options) - stance_outputs(p, w0 - step, **options)) / (
+            2 * step[j]
+        )
+        worst = max(worst, float(np.max(np.abs(fd - matrix[:, j])) / np.max(np.abs(matrix[:, j]))))
+    return worst
 
 
 @pytest.mark.parametrize(("params", "touchdown"), CASES)
@@ -112,11 +130,11 @@ def test_batch_rows_equal_scalar_calls_and_failures_are_nan():
         _ = one["apex", "k_c"]
 
 
-#: The parity of each output (t_bottom, t_stance, bottom, liftoff) and input (touchdown, k_c, k_d)
+#: The parity of each output (t_bottom, t_stance, bottom, liftoff) and input (touchdown, k_c, k_d, c)
 #: under the mirror x -> -x, (q_th, q_thd) -> (-q_th, -q_thd).
 _STATE_PARITY = (1.0, 1.0, -1.0, -1.0)
 OUT_PARITY = np.array([1.0, 1.0, *_STATE_PARITY, *_STATE_PARITY])
-IN_PARITY = np.array([*_STATE_PARITY, 1.0, 1.0])
+IN_PARITY = np.array([*_STATE_PARITY, 1.0, 1.0, 1.0])
 SIGNS = OUT_PARITY[:, None] * IN_PARITY[None, :]
 
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import ast
 import dataclasses
+import math
 from pathlib import Path
 
 import numpy as np
@@ -63,6 +64,23 @@ def _compare(name, jac, quotient, values, steps) -> float:
     return float(np.max(np.maximum(np.abs(jac.matrix - fd) - noise, 0.0) / scale))
 
 
+def _parameter_column(
+    f, params: slipmaps.SlipParams, inp: str, step: float, outputs
+) -> tuple[np.ndarray, float]:
+    """(d outputs / d parameter ``inp``, the step) of ``f(x)``, the map with the parameter at x: a
+    central difference at ``step`` times its value; the leg damping c at 0 (its domain's edge, the
+    exact map's column a derivative from above) by a second-order one from above, at ``step`` times
+    the critical damping 2 sqrt(k_c m)."""
+    x0 = getattr(params, "k_c" if inp == "k" else inp)
+    if inp == "c" and x0 == 0.0:
+        h = step * 2.0 * math.sqrt(params.k_c * params.m)
+        a, b, c = (f(i * h) for i in range(3))
+        assert a.ok and b.ok and c.ok, (a.message, b.message, c.message)
+        return np.array([(-c[o] + 4 * b[o] - 3 * a[o]) / (2 * h) for o in outputs]), h
+    h = step * x0
+    return _central(f, (x0,), 0, h, outputs), h
+
+
 def _central(f, x0: tuple, j: int, h: float, outputs) -> np.ndarray:
     up, down = list(x0), list(x0)
     up[j] += h
@@ -101,13 +119,12 @@ def test_apex_return_jacobian_matches_central_differences(name, point):
             h = REL_STEP.get(name, 1e-6) * max(1.0, abs(point[j]))
             columns.append(_central(apex_return, point, j, h, jac.outputs))
         else:
-            k = getattr(params, "k_c" if inp == "k" else inp)
-            h = REL_STEP.get(name, 1e-6) * k
 
             def step(x, inp=inp):
                 return apex_return(*point, p=_stiffness_params(params, inp, x))
 
-            columns.append(_central(step, (k,), 0, h, jac.outputs))
+            column, h = _parameter_column(step, params, inp, REL_STEP.get(name, 1e-6), jac.outputs)
+            columns.append(column)
         steps.append(h)
     values = np.array([jac.values[o] for o in jac.outputs])
     err = _compare(name, jac, np.array(columns).T, values, steps)
@@ -138,17 +155,14 @@ def _stance_error(name: str, params, touchdown, options: dict) -> float:
             else:
                 columns.append(_central(lambda *x: stance(params, x), touchdown, j, h, jac.outputs))
         else:
-            k = getattr(params, "k_c" if inp == "k" else inp)
-            h = REL_STEP.get(name, 1e-6) * k
-            columns.append(
-                _central(
-                    lambda x, inp=inp: stance(_stiffness_params(params, inp, x), touchdown),
-                    (k,),
-                    0,
-                    h,
-                    jac.outputs,
-                )
+            column, h = _parameter_column(
+                lambda x, inp=inp: stance(_stiffness_params(params, inp, x), touchdown),
+                params,
+                inp,
+                REL_STEP.get(name, 1e-6),
+                jac.outputs,
             )
+            columns.append(column)
         steps.append(h)
     assert keep, (name, options)
     values = np.array([jac.values[o] for o in jac.outputs])

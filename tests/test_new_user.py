@@ -385,7 +385,7 @@ def test_an_unknown_slip_params_argument_names_slip_params_and_its_arguments(cal
         call()
     message = str(err.value)
     assert message.startswith(needle) and "\n" not in message, message
-    assert message.endswith("; its arguments: m, l0, k, k_c, k_d, g_s, g_f, q_r_td, q_r_lo"), message
+    assert message.endswith("; its arguments: m, l0, k, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c"), message
 
 
 @pytest.mark.parametrize(

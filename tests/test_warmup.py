@@ -80,7 +80,20 @@ def test_the_kernel_jobs_are_the_kernels_and_types_the_tests_call():
     called = {  # as test_exact_compiled.py and test_exact_rtol.py call them
         "stance_into": (*td, record, np.empty(ec.N_STANCE)),
         "stance_evaluations": (*td, record),
-        "stance_jacobian": (*td, P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, 1e-11, 1e-12, np.empty(70)),
+        "stance_jacobian": (
+            *td,
+            P.m,
+            P.l0,
+            P.k_c,
+            P.k_d,
+            P.g_s,
+            P.c,
+            P.q_r_lo,
+            1e-11,
+            1e-12,
+            float(ec.LIFTOFF_FORCE),
+            np.empty(ec.N_STANCE * (1 + ec.N_IN)),
+        ),  # fmt: skip
     }
     for name, args in called.items():
         [(function, types, _)] = jobs[f"exact_stance:{name}"]

@@ -53,6 +53,7 @@ __all__ = [
     "equation",
     "definition",
     "entries",
+    "report_entries",
     "forms",
     "by_key",
     "Outcome",
@@ -136,6 +137,9 @@ class Entry:
     section: str  # the section module that registers it, e.g. "sec3"
     #: The derived form (``sp.Eq`` or a tuple of them), computed on demand; None if the entry has text only.
     derived: Callable[[], object] | None = None
+    #: Not in the report: an equation slipmaps adds to the model (the leg damping's), checked like the
+    #: report's but not counted among them (:func:`report_entries`).
+    extension: bool = False
 
     def __post_init__(self):
         if self.status not in STATUSES:
@@ -177,16 +181,23 @@ def _register(entry: Entry, before: str | None = None) -> None:
         section.insert(next(i for i, e in enumerate(section) if e.key == before), entry)
 
 
-def equation(key: str, title: str, status: str, note: str = "", derived: Callable[[], object] | None = None):
+def equation(
+    key: str,
+    title: str,
+    status: str,
+    note: str = "",
+    derived: Callable[[], object] | None = None,
+    extension: bool = False,
+):
     """Decorator registering the decorated check as the check of equation ``key``.
 
     Stackable: one function may check several equations, each decorator giving its own title and
-    note; stacked decorators register top to bottom, so write them in report order. ``derived``:
-    see :class:`Entry`.
+    note; stacked decorators register top to bottom, so write them in report order. ``derived``,
+    ``extension``: see :class:`Entry`.
     """
 
     def decorate(check: Callable[[], None]) -> Callable[[], None]:
-        entry = Entry(key, title, status, note, check, _section_name(check.__module__), derived)
+        entry = Entry(key, title, status, note, check, _section_name(check.__module__), derived, extension)
         below = getattr(check, "_equation_keys", ())  # registered by the decorators under this one
         _register(entry, before=below[0] if below else None)
         check._equation_keys = (key, *below)
@@ -283,14 +294,24 @@ def render_equation_table() -> str:
     for e in entries():
         note = e.note.replace("|", "\\|").replace("\n", " ")
         lines.append(f"| {e.key} | {e.title} | {e.status} | {note} |")
-    lines += ["", f"Totals: {_totals()}."]
+    extensions = len(entries()) - len(report_entries())
+    lines += [
+        "",
+        f"Totals: {_totals()}"
+        + (f"; and {extensions} not in the report (slipmaps' extensions)." if extensions else "."),
+    ]
     return "\n".join(lines) + "\n"
 
 
+def report_entries() -> list[Entry]:
+    """The entries of the report's own equations (:func:`entries` without the extensions)."""
+    return [e for e in entries() if not e.extension]
+
+
 def _totals() -> str:
-    """The entries counted by status: ``120 verified, 25 corrected, 15 definition``."""
+    """The report's entries counted by status: ``120 verified, 25 corrected, 15 definition``."""
     counts = dict.fromkeys(STATUSES, 0)
-    for e in entries():
+    for e in report_entries():
         counts[e.status] += 1
     return ", ".join(f"{counts[s]} {s}" for s in STATUSES)
 
@@ -322,6 +343,7 @@ def render_equation_record() -> str:
             "note": e.note,
             "section": e.section,
             "proof": None if e.check is None else _proof(e.check),
+            **({"extension": True} if e.extension else {}),
         }
         for e in entries()
     ]

@@ -10,7 +10,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..model import mechanics
-from ..symbols import b_x, b_xd, b_y, b_yd, g_f, g_s, k, l0, m, q_r, q_rd, q_rdd, q_th, q_thd, q_thdd, t
+from ..symbols import b_x, b_xd, b_y, b_yd, c, g_f, g_s, k, l0, m, q_r, q_rd, q_rdd, q_th, q_thd, q_thdd, t
 from . import equation, expect_nonzero, expect_zero, forms
 
 
@@ -33,6 +33,36 @@ def check_stance_polar_display() -> None:
     expect_zero(printed_rdd - rdd, "sec2.2.1 printed q_rdd equals the Euler-Lagrange one")
     expect_nonzero(printed_thdd - thdd, "sec2.2.1 printed q_thdd differs from the Euler-Lagrange one")
     expect_zero(corrected_thdd - thdd, "sec2.2.1 corrected q_thdd equals the Euler-Lagrange one")
+
+
+@equation(
+    "sec2.2.1-damped",
+    "polar stance dynamics with leg damping (not in the report)",
+    "verified",
+    "Not printed in the report: the leg damping extension, radial force -k (q_r - l0) - c q_rd "
+    "(slipmaps' parameter c). From the Euler-Lagrange equations of (1) with the Rayleigh "
+    "dissipation function R = c q_rd^2/2: q_rdd gains -c q_rd/m, q_thdd is unchanged (the damper "
+    "acts along the leg, no torque about the toe); at c = 0 it is the row above.",
+    derived=lambda: forms(*zip((q_rdd, q_thdd), mechanics.stance_polar_rhs(k, g_s, c)[1::2], strict=True)),
+    extension=True,
+)
+def check_stance_polar_damped() -> None:
+    """Printed: nothing (the report's leg is lossless); the stated extension, checked as if printed:
+    m q_rdd = m q_r q_thd^2 + k (l0 - q_r) - c q_rd - m g_s cos q_th, the angular row of eq (3)
+    unchanged."""
+    el_r, el_th = mechanics.euler_lagrange_polar(k, g_s, c)
+    _, el_th_lossless = mechanics.euler_lagrange_polar()
+    stated = m * q_rdd - (m * q_r * q_thd**2 + k * (l0 - q_r) - c * q_rd - m * g_s * sp.cos(q_th))
+    expect_zero(stated - el_r, "damped radial equation equals d/dt dL/dq_rd - dL/dq_r + dR/dq_rd")
+    expect_zero(el_th - el_th_lossless, "damped angular equation equals the lossless one (eq 3)")
+    _, rdd, _, thdd = mechanics.stance_polar_rhs(k, g_s, c)
+    _, rdd_lossless, _, thdd_lossless = mechanics.stance_polar_rhs()
+    expect_zero(rdd - rdd_lossless + c * q_rd / m, "damped q_rdd is the lossless one minus c q_rd/m")
+    expect_zero(thdd - thdd_lossless, "damped q_thdd is the lossless one")
+    damping = mechanics.stance_polar_damping()
+    expect_zero(damping[1] + c * q_rd / m, "the damper's term of the field is -c q_rd/m on q_rdd")
+    for i in (0, 2, 3):
+        expect_zero(damping[i], f"the damper's term of the field is 0 on component {i}")
 
 
 def _accelerations(rows):
@@ -65,8 +95,10 @@ def check_stance_cartesian_display() -> None:
     # is refuted at one body position above the toe.
     point = {b_x: sp.Rational(-3, 10), b_y: sp.Rational(9, 10), b_xd: 2, b_yd: -1}
     printed, corrected = rows(sp.atan(b_y / b_x)), rows(sp.atan2(-b_x, b_y))
-    for name, p, c, d in zip(("b_xdd", "b_ydd"), printed, corrected, (xdd, ydd), strict=True):
-        expect_zero(c - d, f"sec2.2.1 {name} with q_th = atan2(-b_x, b_y) equals the Cartesian Lagrange one")
+    for name, p, fixed, d in zip(("b_xdd", "b_ydd"), printed, corrected, (xdd, ydd), strict=True):
+        expect_zero(
+            fixed - d, f"sec2.2.1 {name} with q_th = atan2(-b_x, b_y) equals the Cartesian Lagrange one"
+        )
         expect_nonzero(
             (p - d).subs(point), f"sec2.2.1 printed {name} (q_th = arctan(b_y/b_x)) differs at {point}"
         )

@@ -8,6 +8,12 @@ DOP853 with events for the bottom, where k_c switches to k_d, liftoff and the fa
 here as an *external* kernel with its Jacobian (the variational equations with saltation at the
 bottom, ``stance_jacobian``), which the generated derivatives go through.
 
+It takes the leg damping ``c`` (derive/params.py; the field's damper term from
+:func:`..model.mechanics.stance_polar_damping`), and option ``liftoff``: ``"force"`` (default) ends
+the stance where the leg force k_d (l0 - q_r) - c q_rd falls to 0 (the ground cannot pull) or at
+q_r = q_r_lo, whichever comes first; ``"length"`` at q_r = q_r_lo only. At c = 0 both are the
+lossless stance, bit for bit. Its Jacobian has a column for c (:data:`JACOBIAN_INPUTS`).
+
 Option ``method``: ``"compiled"`` (default) runs those kernels; ``"scipy"`` the ``solve_ivp``
 reference (``slipmaps.runtime.exact.reference``, a backend of its own, 1-2 ms per stance). This map
 is the ground truth: :data:`GROUND_TRUTH`, not in ``MAPS`` (the approximations).
@@ -29,7 +35,7 @@ from ..tangent import derivative_fields
 
 #: The support module of the exact stance's kernels (derive/templates/exact_stance.py.j2).
 _MODULE = "exact_stance"
-_PARAMS = ("m", "l0", "k_c", "k_d", "g_s")
+_PARAMS = ("m", "l0", "k_c", "k_d", "g_s", "c")
 
 _OPTIONS = (
     Option(
@@ -44,7 +50,18 @@ _OPTIONS = (
     ),
     Option("rtol", "relative tolerance of the DOP853 integration", DEFAULT_RTOL, low=1e-14, high=1e-3),
     Option("atol", "absolute tolerance of the DOP853 integration", DEFAULT_ATOL, low=1e-16, high=1e-3),
+    Option(
+        "liftoff",
+        "where a damped leg lifts off (the same liftoff at c = 0)",
+        "force",
+        choices=(
+            ("force", "where the leg force k_d (l0 - q_r) - c q_rd falls to 0, or at q_r = q_r_lo if first"),
+            ("length", "at q_r = q_r_lo (the leg's pull on the ground ignored)"),
+        ),
+    ),
 )
+#: The option ``liftoff`` (the exact stance template's codes come from it).
+LIFTOFF = _OPTIONS[-1]
 
 #: The arguments of the external stance kernels, in their order: the stance kernel's.
 _ARGS = (
@@ -53,15 +70,16 @@ _ARGS = (
     + (catalog.PARAMS["q_r_lo"],)
     + tuple(o.arg() for o in _OPTIONS if o.kernel)
 )
-_WRT = tuple(a.name for a in catalog.TOUCHDOWN) + ("k_c", "k_d")
+#: The stance Jacobian's columns: the touchdown state, the stiffnesses and the damping.
+JACOBIAN_INPUTS = tuple(a.name for a in catalog.TOUCHDOWN) + ("k_c", "k_d", "c")
 
 STANCE_JACOBIAN = Kernel(
     name="stance_jacobian",
-    summary="Exact stance and its Jacobian (variational equations, saltation at the bottom).",
+    summary="Exact stance and its Jacobian (variational equations, saltation at the bottom and liftoff).",
     equations=("2", "3"),
     args=_ARGS,
     steps=(),
-    outputs=catalog.STANCE + Group("", derivative_fields(catalog.STANCE, _WRT)),
+    outputs=catalog.STANCE + Group("", derivative_fields(catalog.STANCE, JACOBIAN_INPUTS)),
     module=_MODULE,
     external=True,
 )
@@ -76,7 +94,7 @@ STANCE = Kernel(
     module=_MODULE,
     external=True,
     jacobian=STANCE_JACOBIAN,
-    jacobian_wrt=_WRT,
+    jacobian_wrt=JACOBIAN_INPUTS,
 )
 
 
@@ -107,17 +125,19 @@ def _build(inputs: MapInputs) -> MapBuild:
 
 
 _HALF_PARAMS = {
-    "touchdown": ("m", "l0", "k_c", "g_s", "q_r_lo"),
-    "bottom": ("m", "l0", "k_d", "g_s", "q_r_lo"),
+    "touchdown": ("m", "l0", "k_c", "g_s", "q_r_lo", "c"),
+    "bottom": ("m", "l0", "k_d", "g_s", "q_r_lo", "c"),
 }
-_TOLERANCES = tuple(o for o in _OPTIONS if o.kernel)
+_TOLERANCES = tuple(o for o in _OPTIONS if o.kernel and o is not LIFTOFF)
+#: Each half's kernel options: the tolerances, and for the half that ends at liftoff its option.
+_HALF_OPTIONS = {"touchdown": _TOLERANCES, "bottom": (*_TOLERANCES, LIFTOFF)}
 
 
 def _half_kernel(name: str, start: str) -> Kernel:
     args = (
         start_args(start)
         + tuple(catalog.PARAMS[p] for p in _HALF_PARAMS[start])
-        + tuple(o.arg() for o in _TOLERANCES)
+        + tuple(o.arg() for o in _HALF_OPTIONS[start])
     )
     return Kernel(
         name=name,
@@ -156,7 +176,7 @@ HALVES = tuple(
         start=start,
         params=_HALF_PARAMS[start],
         build=_half_build(_half_kernel(half, start)),
-        options=_TOLERANCES,
+        options=_HALF_OPTIONS[start],
         summary=f"the exact stance's {half} half, the same integration split at the bottom",
     )
     for half, start, end, k in (

@@ -82,6 +82,49 @@ def _stance_polar_tangent() -> Kernel:
     )
 
 
+_DAMPER_PARAMS = (PARAMS["m"], PARAMS["c"])
+
+
+def _stance_polar_damping() -> Kernel:
+    """The leg damper's term of the polar stance field (:func:`.mechanics.stance_polar_damping`): the
+    damped field is ``stance_polar_rhs`` plus it (the exact simulator adds it only for c != 0, so a
+    lossless leg's arithmetic is the report's)."""
+    return _plain(
+        "stance_polar_damping",
+        "The leg damper's term of the polar stance field: the damped field minus the lossless one.",
+        ("sec2.2.1-damped",),
+        _POLAR_ARGS + _DAMPER_PARAMS,
+        [(f"damping_{name}", f"the damper's term of d{name}/dt", rate) for name, _, rate in _STATE],
+        mechanics.stance_polar_damping(),
+    )
+
+
+def _stance_polar_damping_tangent() -> Kernel:
+    """The leg damper's term of the variational equations for one column s of S = dy/dw: J_D s +
+    (dD/dc) s_c, D the damper's term of the field (:func:`_stance_polar_damping`), s_c = dc/dw."""
+    term = sp.Matrix(mechanics.stance_polar_damping())
+    states = (q_r, q_rd, q_th, q_thd)
+    column = [sym(f"s_{name}") for name, _, _ in _STATE]
+    s_c = sym("s_c")
+    tangent = term.jacobian(states) * sp.Matrix(column) + sp.diff(term, PARAMS["c"].symbol) * s_c
+    args = tuple(
+        Arg(col, f"d{name}/dw, the state's sensitivity to an input w [{unit} per unit of w]")
+        for col, (name, unit, _) in zip(column, _STATE, strict=True)
+    ) + (Arg(s_c, "dc/dw, the damping's sensitivity to w (1 for w = c, else 0) [N s/m per unit of w]"),)
+    fields = [
+        (f"ds_{name}", f"the damper's term of d/dt of d{name}/dw", f"{rate} per unit of w")
+        for name, _, rate in _STATE
+    ]
+    return _plain(
+        "stance_polar_damping_tangent",
+        "The leg damper's term of the variational equations: J_D dy/dw + (dD/dc) dc/dw.",
+        ("sec2.2.1-damped",),
+        _POLAR_ARGS + args + _DAMPER_PARAMS,
+        fields,
+        list(tangent),
+    )
+
+
 def _periods(k_: sp.Basic) -> tuple[sp.Basic, sp.Basic]:
     """The stance's natural periods [s]: the spring's 2 pi sqrt(m/k) and the pendulum's 2 pi sqrt(l0/g_s)."""
     m, l0, g_s = (PARAMS[n].symbol for n in ("m", "l0", "g_s"))
@@ -133,6 +176,8 @@ def slip_model_kernels() -> tuple[Kernel, ...]:
             mechanics.stance_polar_rhs(),
         ),
         _stance_polar_tangent(),
+        _stance_polar_damping(),
+        _stance_polar_damping_tangent(),
         _plain(
             "stance_cartesian_rhs",
             "Cartesian stance vector field d/dt (b_x, b_xd, b_y, b_yd), toe at the origin on flat ground.",

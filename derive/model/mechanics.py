@@ -1,5 +1,10 @@
 """The SLIP model from first principles (report sections 2.2 and 3.1, eqs 1-3, 27-29).
 
+The leg damping ``c`` (not in the report) enters as a Rayleigh dissipation function
+R = c q_rd^2 / 2 (:func:`dissipation`): the Euler-Lagrange equations gain dR/dq_rd on the radial
+row, the generalized force -c q_rd along the leg (no torque about the toe). Every function takes it
+as ``damping`` (default 0, the report's lossless leg, whose expressions are unchanged).
+
 Everything here is derived, not typed: the Lagrangian (1) is built from the Cartesian kinetic
 and potential energies of the body at (-q_r sin q_th, q_r cos q_th); its Euler-Lagrange
 equations give (2)-(3); the Legendre transform gives the Hamiltonian (27) and Hamilton's
@@ -21,6 +26,7 @@ from ..symbols import (
     b_y,
     b_y_t,
     b_yd,
+    c,
     g_f,
     g_s,
     k,
@@ -40,8 +46,10 @@ from ..symbols import (
 __all__ = [
     "body_position",
     "lagrangian_polar",
+    "dissipation",
     "euler_lagrange_polar",
     "stance_polar_rhs",
+    "stance_polar_damping",
     "hamiltonian",
     "hamiltonian_vector_field",
     "stance_energy",
@@ -80,30 +88,52 @@ def lagrangian_polar(stiffness=k, gravity=g_s):
 
 
 @cache
-def euler_lagrange_polar(stiffness=k, gravity=g_s):
-    """Eqs (2)-(3): d/dt(dL/dqdot_j) - dL/dq_j for j = r, theta (expressions equal to zero)."""
+def dissipation(damping=0):
+    """The Rayleigh dissipation function of the leg damper, R = damping q_rd^2 / 2 (in q_r(t)): the
+    power it takes from the body is 2 R = damping q_rd^2."""
+    return sp.Rational(1, 2) * damping * q_r_t.diff(t) ** 2
+
+
+@cache
+def euler_lagrange_polar(stiffness=k, gravity=g_s, damping=0):
+    """Eqs (2)-(3): d/dt(dL/dqdot_j) - dL/dq_j + dR/dqdot_j for j = r, theta (expressions equal to
+    zero), R the leg damper's :func:`dissipation` (none at ``damping`` 0: the report's equations)."""
     pos = body_position(q_r_t, q_th_t)
     vel = pos.diff(t)
     lag = sp.Rational(1, 2) * m * (vel.T * vel)[0, 0] - (
         sp.Rational(1, 2) * stiffness * (l0 - q_r_t) ** 2 + m * gravity * pos[1]
     )
+    rayleigh = dissipation(damping)
     eqs = []
     for coord in (q_r_t, q_th_t):
         el = sp.diff(lag.diff(coord.diff(t)), t) - lag.diff(coord)
+        if damping != 0:
+            el = el + rayleigh.diff(coord.diff(t))
         eqs.append(sp.expand(sp.simplify(_functions_to_symbols(el))))
     return tuple(eqs)
 
 
 @cache
-def stance_polar_rhs(stiffness=k, gravity=g_s):
+def stance_polar_rhs(stiffness=k, gravity=g_s, damping=0):
     """First-order polar stance dynamics (q_rd, q_rdd, q_thd, q_thdd), solved from (2)-(3).
 
-    This is the corrected form of the report's first stance-dynamics display (section 2.2.1).
+    This is the corrected form of the report's first stance-dynamics display (section 2.2.1); with
+    ``damping`` the leg's radial force is -stiffness (q_r - l0) - damping q_rd.
     """
     q_rdd, q_thdd = sp.symbols("q_rdd q_thdd", real=True)
-    el_r, el_th = euler_lagrange_polar(stiffness, gravity)
+    el_r, el_th = euler_lagrange_polar(stiffness, gravity, damping)
     sol = sp.solve([el_r, el_th], [q_rdd, q_thdd], dict=True)[0]
     return (q_rd, sp.expand(sol[q_rdd]), q_thd, sp.expand(sol[q_thdd]))
+
+
+@cache
+def stance_polar_damping(damping=c):
+    """What the leg damper adds to the polar stance field: :func:`stance_polar_rhs` with ``damping``
+    minus without, simplified (the damped field is the lossless one plus this term, so a damping of
+    0 leaves the lossless field's arithmetic as it is)."""
+    damped = stance_polar_rhs(k, g_s, damping)
+    lossless = stance_polar_rhs(k, g_s)
+    return tuple(sp.simplify(d - u) for d, u in zip(damped, lossless, strict=True))
 
 
 @cache

@@ -244,6 +244,8 @@ class Call:
         values = {**params.values(), **info.encode(resolved)}  # ValueError naming the valid values
         module = info.backend(resolved)
         backend = KERNELS if module is None else _backend_module(module)
+        if hasattr(backend, "check_params"):  # a backend that does not model every parameter
+            backend.check_params(params)
         return cls(info, params, resolved, values, backend, info.kernels_for(resolved))
 
     def record(self, spec, rows: bool = False) -> np.ndarray:

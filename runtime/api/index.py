@@ -23,7 +23,7 @@ from slipmaps.generated import maps_index
 
 from .names import public_names
 from .numeric import NotANumber, is_real, num
-from .params import SlipParams
+from .params import PARAMETERS, SlipParams
 from .validate import check_params
 
 __all__ = [
@@ -39,6 +39,7 @@ __all__ = [
     "maps",
     "model_kernels",
     "names",
+    "takers",
 ]
 
 #: The name of the ground truth, the exact map.
@@ -243,8 +244,10 @@ class MapInfo:
         return None
 
     def check_params(self, params: SlipParams) -> None:
-        """ValueError when ``params`` break a requirement of the map (a constant stiffness)."""
+        """ValueError when ``params`` break a requirement of the map (a constant stiffness) or give a
+        parameter the map does not model (:func:`check_modelled`)."""
         check_params(params)
+        check_modelled(self, params)
         if "constant_stiffness" in self.requires and not params.constant_stiffness:
             others = [m.name for m in maps() if "constant_stiffness" not in m.requires]
             raise ValueError(
@@ -320,6 +323,30 @@ def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
         fixed=dict(r.get("fixed", {})),
         **extra,
     )
+
+
+#: The parameters only some maps model (their row's ``unmodelled`` in ``derive/params.py``): name ->
+#: the value a map that does not declare it assumes.
+UNMODELLED = {r["name"]: r["unmodelled"] for r in PARAMETERS if "unmodelled" in r}
+_DOCS = {r["name"]: f"{r['doc'].split(',')[0]} [{r['unit']}]" for r in PARAMETERS}
+
+
+def takers(parameter: str) -> tuple[str, ...]:
+    """The maps and half-stance maps that declare ``parameter`` (their index rows' ``params``)."""
+    return tuple(m.name for m in (*maps(), *halves()) if parameter in m.params)
+
+
+def check_modelled(info: MapInfo, params: SlipParams) -> None:
+    """ValueError, one line, when ``params`` give a parameter that ``info`` does not model (not in its
+    ``params``) another value than the one it assumes (:data:`UNMODELLED`: the leg damping c = 0),
+    naming the map, the parameter and the maps that take it."""
+    for name, assumed in UNMODELLED.items():
+        value = getattr(params, name)
+        if value != assumed and name not in info.params:
+            raise ValueError(
+                f"map {info.name!r} does not model {name} ({_DOCS[name]}): got {name}={num(value)}, it "
+                f"assumes {name}={num(assumed)}; maps that take {name}: {', '.join(takers(name)) or 'none'}"
+            )
 
 
 @cache

@@ -1,16 +1,18 @@
 """SLIP parameters (report Table 1), validated on construction.
 
-Units are SI throughout: kg, m, N/m, m/s^2. ``SlipParams(m=80, l0=1, k=20_000)`` gives a leg of
-constant stiffness ``k``; ``k_c`` / ``k_d`` set the stiffness while the leg compresses (until the
-bottom) and after the bottom separately (report section 5). ``g_s`` is the gravitational
+Units are SI throughout: kg, m, N/m, m/s^2, N s/m. ``SlipParams(m=80, l0=1, k=20_000)`` gives a
+leg of constant stiffness ``k``; ``k_c`` / ``k_d`` set the stiffness while the leg compresses (until
+the bottom) and after the bottom separately (report section 5). ``g_s`` is the gravitational
 acceleration during stance, ``g_f`` during flight (both positive numbers, pointing down).
 ``q_r_td`` and ``q_r_lo`` are the touchdown and liftoff leg lengths; both default to the rest
 length ``l0`` and must lie in (0, l0]; :meth:`SlipParams.with_` keeps a leg length that is at the
-rest length there, so ``HUMAN_RUNNER.with_(l0=0.6)`` has 0.6 m ones. Every field defaults to the
-human runner (:data:`HUMAN_RUNNER`: 80 kg, 1 m leg, 20 kN/m). A value that is not a real number (a
-string, say) is a TypeError (:class:`ParamTypeError`, also a ValueError), one out of its domain a
-ValueError (:class:`ParamError`); both name the argument given (``k`` when ``k`` set both
-stiffnesses). An unknown argument is a TypeError naming ``SlipParams`` and its arguments.
+rest length there, so ``HUMAN_RUNNER.with_(l0=0.6)`` has 0.6 m ones. ``c`` is the leg damping
+(default 0, >= 0; not in the report: only the maps that declare it model it, the others refuse
+c != 0). Every field defaults to the human runner (:data:`HUMAN_RUNNER`: 80 kg, 1 m leg, 20 kN/m).
+A value that is not a real number (a string, say) is a TypeError (:class:`ParamTypeError`, also a
+ValueError), one out of its domain a ValueError (:class:`ParamError`); both name the argument given
+(``k`` when ``k`` set both stiffnesses). An unknown argument is a TypeError naming ``SlipParams``
+and its arguments.
 """
 
 from __future__ import annotations
@@ -57,6 +59,13 @@ PARAMETERS: tuple[dict, ...] = _table.PARAMETERS
 ALIASES: dict[str, dict] = _table.ALIASES
 FIELDS: tuple[str, ...] = tuple(r["name"] for r in PARAMETERS)
 _ROWS = {r["name"]: r for r in PARAMETERS}
+#: What each domain of the table asks of a field, in its error message (a leg length's bound by l0
+#: is checked after all fields are read).
+_DOMAIN_WORDS = {
+    "positive": "must be finite and positive",
+    "leg_length": "must be finite and positive",
+    "non_negative": "must be finite and non-negative",
+}
 
 
 def _signature() -> inspect.Signature:
@@ -79,7 +88,8 @@ class SlipParams:
     """Physical parameters of the SLIP template (report Table 1), validated on construction.
 
     Fields (``derive/params.py``): m [kg], l0 [m], k_c and k_d [N/m], g_s and g_f [m/s^2], q_r_td
-    and q_r_lo [m]; ``k=`` sets k_c = k_d. Frozen, hashable, compared by value."""
+    and q_r_lo [m], the leg damping c [N s/m] (default 0); ``k=`` sets k_c = k_d. Frozen, hashable,
+    compared by value."""
 
     __slots__ = (*FIELDS, "_k", "_h")
 
@@ -115,8 +125,12 @@ class SlipParams:
                 continue
             if not is_real(value):
                 raise ParamTypeError(origin.get(name, name), "must be a real number", value)
-            if not math.isfinite(value) or value <= 0.0:
-                raise ParamError(origin.get(name, name), "must be finite and positive", value)
+            if (
+                not math.isfinite(value)
+                or value < 0.0
+                or (value == 0.0 and _ROWS[name]["domain"] != "non_negative")
+            ):
+                raise ParamError(origin.get(name, name), _DOMAIN_WORDS[_ROWS[name]["domain"]], value)
             given[name] = float(value)
         for name in FIELDS:
             default = _ROWS[name]["default"]

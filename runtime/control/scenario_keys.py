@@ -318,7 +318,8 @@ def _params_rows() -> list[tuple[str, str, str, str, str]]:
     rows = []
     for f in FIELDS:
         rest = docs[f]["default"]  # "l0" for a leg length: it follows the rest length
-        kind = f"number in (0, {rest}]" if isinstance(rest, str) else "number > 0"
+        kinds = {"leg_length": f"number in (0, {rest}]", "non_negative": "number >= 0"}
+        kind = kinds.get(docs[f]["domain"], "number > 0")
         default = rest if isinstance(rest, str) else repr(getattr(HUMAN_RUNNER, f))
         rows.append((f"`{f}`", kind, default, docs[f]["unit"], docs[f]["doc"]))
     rows.append(("`k`", "number > 0", "", "N/m", "both stiffnesses, k_c = k_d = k"))

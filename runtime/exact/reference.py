@@ -76,7 +76,7 @@ from slipmaps.runtime.api import model
 from slipmaps.runtime.api.batch import BatchInterrupted
 from slipmaps.runtime.api.params import SlipParams
 from slipmaps.runtime.api.validate import POLAR_NAMES, PolarState, polar_state
-from slipmaps.runtime.api.validate import check_params as _check_params
+from slipmaps.runtime.api.validate import check_params as _slip_params
 from slipmaps.runtime.api.validate import leg_angle as _leg_angle
 from slipmaps.runtime.api.validate import non_negative as _non_negative
 from slipmaps.runtime.api.validate import positive as _positive
@@ -189,6 +189,18 @@ class StepResult:
 # ----------------------------------------------------------------------------------------------
 def _tolerances(rtol: object, atol: object) -> tuple[float, float]:
     return _positive("rtol", rtol), _positive("atol", atol)
+
+
+def _check_params(params: object) -> SlipParams:
+    """``params`` (a SlipParams) that this reference models: ValueError, one line, for a leg damping
+    c != 0 (the compiled simulator, the exact map's default ``method="compiled"``, models it)."""
+    params = _slip_params(params)
+    if params.c != 0.0:
+        raise ValueError(
+            f"the solve_ivp reference (the exact map's method='scipy') does not model the leg damping c: "
+            f"got c={params.c!r}; the compiled simulator (method='compiled', the default) does"
+        )
+    return params
 
 
 def default_t_max(params: SlipParams) -> float:
@@ -804,7 +816,13 @@ def step_values(r: StepResult) -> dict[str, float]:
 class ReferenceBackend:
     """The solve_ivp simulator as the exact map's backend (option ``method="scipy"``): stance,
     apex return and the state at given times, one row at a time (rows loop in Python, with a
-    progress bar); no Jacobian (the compiled simulator's variational equations give those)."""
+    progress bar); no Jacobian (the compiled simulator's variational equations give those), no leg
+    damping (:meth:`check_params`)."""
+
+    def check_params(self, params: SlipParams) -> None:
+        """ValueError, one line, for parameters this backend does not model (a leg damping c != 0),
+        before any row runs."""
+        _check_params(params)
 
     def _tolerances(self, call) -> dict[str, float]:
         return {"rtol": call.values["rtol"], "atol": call.values["atol"]}

@@ -40,7 +40,8 @@ class MissingData(LookupError):
 
 
 def _equations(r: dict) -> list[dict]:
-    return need(r, "equations")["equations"]
+    """The report's equations of the registry's record (its extensions, not in the report, left out)."""
+    return [e for e in need(r, "equations")["equations"] if not e.get("extension")]
 
 
 def need(records: dict, key: str):
