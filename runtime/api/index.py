@@ -245,7 +245,7 @@ class MapInfo:
 
     def check_params(self, params: SlipParams) -> None:
         """ValueError when ``params`` break a requirement of the map (a constant stiffness) or give a
-        parameter the map does not model (:func:`check_modelled`)."""
+        parameter the map does not model (``check_modelled`` below)."""
         check_params(params)
         check_modelled(self, params)
         if "constant_stiffness" in self.requires and not params.constant_stiffness:
