@@ -287,3 +287,32 @@ def test_cli_and_scenarios_refuse_damping_for_a_map_without_it(tmp_path, capsys)
     assert main(["run", str(scenario), "--no-figure"]) == 2
     err = capsys.readouterr().err
     assert "map 'iterative' does not model c" in err and "Traceback" not in err and err.count("\n") == 1
+
+
+# ----------------------------------------------------------------------------------------------
+# Gaits: with damping k_d > k_c puts back what the leg loses
+# ----------------------------------------------------------------------------------------------
+def test_a_damped_gait_needs_k_d_above_k_c_and_the_deadbeat_finds_it():
+    """At 10 % of the critical damping (253 N s/m, the human runner) the deadbeat step on the exact
+    map finds the periodic gait through (1 m, 5 m/s) with the touchdown angle and k_d (measured:
+    k_d = 37.3 kN/m against k_c = 20 kN/m, 0.347 rad); the exact map from that plan returns to the
+    same apex; with k_d held at k_c the angle keeps the speed and the apex falls."""
+    damped = HUMAN_RUNNER.with_(c=253.0)
+    plan = slipmaps.deadbeat("exact", damped, 1.0, 5.0, 1.0, 5.0, controls=("touchdown_angle", "k_d"))
+    assert plan.status.name == "REACHED", plan
+    assert plan.k_d > 1.5 * damped.k_c, plan
+    step = slipmaps.apex_return("exact", damped.with_(k_d=plan.k_d), 1.0, 5.0, plan.touchdown_angle)
+    assert step.status == Status.OK
+    assert abs(step.next_apex_height - 1.0) < 1e-8 and abs(step.next_apex_speed - 5.0) < 1e-8, step
+    # the angle alone (one control, two targets: the speed first) keeps 5 m/s and loses height
+    held = slipmaps.deadbeat("exact", damped, 1.0, 5.0, 1.0, 5.0, controls=("touchdown_angle",))
+    assert held.k_d == damped.k_c and abs(held.next_apex_speed - 5.0) < 1e-8, held
+    assert held.next_apex_height < 0.95, held  # measured 0.904 m: the energy the leg lost
+
+
+def test_fixed_points_refuse_a_damped_leg_and_name_the_deadbeat():
+    """fixed_points searches the line of constant apex energy: a damped step leaves it, so it says
+    so in one line (it returned a point 0.44 m/s off the apex speed as OK before it checked c)."""
+    with pytest.raises(ValueError, match=r"c == 0.*slipmaps.deadbeat") as info:
+        slipmaps.fixed_points("exact", HUMAN_RUNNER.with_(c=253.0), apex_height=1.0, speed=5.0)
+    assert "\n" not in str(info.value)

@@ -265,8 +265,15 @@ def energy_of(params: SlipParams, apex_height: float, apex_speed: float) -> floa
 
 
 def check_conservative(params: SlipParams) -> None:
-    """ValueError unless a step conserves the flight energy (k_c == k_d, g_s == g_f, q_r_td == q_r_lo)."""
+    """ValueError unless a step conserves the flight energy (k_c == k_d, g_s == g_f, q_r_td == q_r_lo,
+    no leg damping: c == 0)."""
     check_params(params)
+    if params.c != 0.0:
+        raise ValueError(
+            f"fixed_points needs a step that conserves the apex energy (c == 0), got c={params.c!r}: the leg "
+            "damping dissipates energy every step, so no periodic gait exists at k_c == k_d; "
+            "slipmaps.deadbeat with controls=('touchdown_angle', 'k_d') finds the k_d of a gait"
+        )
     for a, b, why in (
         (
             "k_c",
