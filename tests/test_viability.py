@@ -510,6 +510,14 @@ def test_bad_arguments_are_refused_by_name(kwargs, words):
         slipmaps.viability("exact", VIBLY, apex_height=[0.5, 1.0], touchdown_angle=[0.1, 0.2], **kwargs)
 
 
+def test_a_fixed_energy_with_a_damped_leg_is_refused():
+    """A damped step (c > 0, the exact map) leaves the energy's line: give the apex speed."""
+    with pytest.raises(ValueError, match=r"no leg damping c = 0\): give apex_speed"):
+        slipmaps.viability(
+            "exact", VIBLY.with_(c=50.0), apex_height=[0.5, 1.0], touchdown_angle=[0.1, 0.2], energy=ENERGY
+        )
+
+
 def test_a_k_d_grid_needs_a_variable_stiffness_map():
     with pytest.raises(ValueError, match="variable-stiffness map"):
         slipmaps.viability(

@@ -15,7 +15,7 @@ one viable action) and the measure of robustness of a state (the share of its ac
     vs.plot("viability.png")
 
 - The states: ``apex_height`` [m] at a fixed flight ``energy`` E = m (g_f h + v^2/2) [J] (the step
-  must conserve it: k_c = k_d, the default leg lengths, g_s = g_f), or ``apex_height`` x
+  must conserve it: k_c = k_d, the default leg lengths, g_s = g_f, c = 0), or ``apex_height`` x
   ``apex_speed`` [m/s] (any map and parameters).
 - The actions: ``touchdown_angle`` [rad, from the vertical, counterclockwise positive: a forward
   runner's is positive], optionally ``k_d`` [N/m] (the decompression stiffness chosen per step, k_c
@@ -231,10 +231,15 @@ def _grids(params, apex_height, touchdown_angle, apex_speed, energy, k_d, retrac
             raise ValueError(
                 "a k_d grid changes the energy every step (k_c != k_d): give apex_speed, not energy"
             )
-        if not (params.constant_stiffness and params.g_s == params.g_f and params.q_r_td == params.q_r_lo):
+        if not (
+            params.constant_stiffness
+            and params.g_s == params.g_f
+            and params.q_r_td == params.q_r_lo
+            and params.c == 0.0
+        ):
             raise ValueError(
-                "a fixed energy needs a step that conserves it (k_c = k_d, g_s = g_f, q_r_td = q_r_lo): "
-                "give apex_speed instead"
+                "a fixed energy needs a step that conserves it (k_c = k_d, g_s = g_f, q_r_td = q_r_lo, "
+                "no leg damping c = 0): give apex_speed instead"
             )
         top = energy / (params.m * params.g_f)
         if states["apex_height"][-1] > top:
@@ -278,7 +283,7 @@ def viability(
     ``apex_height`` [m], ``apex_speed`` [m/s], ``touchdown_angle`` [rad, from the vertical,
     counterclockwise positive], ``k_d`` [N/m] and ``retraction_rate`` [rad/s] are 1-D increasing
     grids. The state is the apex height at the fixed flight ``energy`` E = m (g_f h + v^2/2) [J]
-    (the step must conserve it: k_c = k_d, g_s = g_f, q_r_td = q_r_lo; no ``k_d`` grid), or the apex
+    (the step must conserve it: k_c = k_d, g_s = g_f, q_r_td = q_r_lo, c = 0; no ``k_d`` grid), or the apex
     height and speed (``apex_speed`` given); give one of ``apex_speed`` and ``energy``. The actions:
     the touchdown angle, then k_d (the parameters' k_c kept) and the retraction rate when given.
     ``ground`` [m] is the touchdown ground's height every step; ``options`` the map's
