@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..maps import geyer, iterative_helpers
+from ..maps import geyer, geyer_damped_helpers, iterative_helpers
+from ..maps.geyer_damped_helpers import DELTA
 from ..maps.iterative_helpers import (
     H_INV,
     P_TH_N,
@@ -28,6 +29,7 @@ from ..symbols import (
     E,
     a,
     b,
+    c,
     epsilon,
     g_s,
     k,
@@ -667,6 +669,138 @@ def check_eq26() -> None:
             abs(sp.N((atan2_form - corrected).subs(point))) < 1e-12,
             f"eq 26 atan2 form equals the corrected t_b ({name} gait)",
         )
+
+
+# --------------------------------------------------------------------------------------------
+# Section 3.1 with leg damping (not in the report): derive/maps/geyer_damped_helpers.py.
+
+_OMEGA_SQ = sp.Symbol("omega_n", positive=True) ** 2
+
+
+@equation(
+    "sec3.1-damped",
+    "damped radial equation under Assumption 1, linearized (not in the report)",
+    "verified",
+    "Not printed in the report: (4) with the leg damper's -c q_rd (sec2.2.1-damped), in (7)'s rho "
+    "and omega, 1/(1+rho)^3 ~ 1 - 3 rho: rho'' + 2 delta rho' + (omega0^2 + 3 omega^2) rho = omega^2 - "
+    "g_s/l0, delta = c/(2 m). At c = 0 it is the time derivative of (9): rho'' = lambda rho + mu/2.",
+    derived=lambda: forms(
+        (sp.Symbol("omega_n") ** 2, geyer_damped_helpers.damped_radial_equation()[0]),
+        (
+            sp.Derivative(rho, (t, 2)) + 2 * DELTA * rho_d + _OMEGA_SQ * rho,
+            geyer_damped_helpers.damped_radial_equation()[1],
+        ),
+    ),
+    extension=True,
+)
+def check_damped_radial() -> None:
+    """Printed: nothing (the report's leg is lossless).
+    Stated: rho'' + 2 delta rho' + omega_n^2 rho = omega^2 - g_s / l0, omega_n^2 = omega0^2 + 3 omega^2."""
+    wn2, rhs = geyer_damped_helpers.damped_radial_equation()
+    expect_zero(wn2 - (omega0**2 + 3 * omega**2), "omega_n^2 = omega0^2 + 3 omega^2")
+    expect_zero(rhs - (omega**2 - g_s / l0), "the constant side is omega^2 - g_s / l0")
+    lam_, mu_, _ = geyer.radial_quadratic()
+    expect_zero(wn2 + lam_, "at c = 0 omega_n^2 = -lambda of (9)")
+    expect_zero(rhs - mu_ / 2, "at c = 0 the constant side is mu / 2 of (9)")
+    lossless = geyer.assumption1_equations()[0]
+    expect_zero(
+        geyer_damped_helpers.damped_assumption1_radial() - lossless - c * q_rd,
+        "the damped (4) is (4) plus c q_rd",
+    )
+
+
+@equation(
+    "sec3.1-dampedrho",
+    "damped radial solution rho(t) from touchdown (not in the report)",
+    "verified",
+    "Not printed in the report: dsolve of the damped radial equation from (rho_td, rho_d_td): rho = a + "
+    "exp(-delta t) (A_c cos(omega_D t) + B_s sin(omega_D t)), omega_D^2 = omega_n^2 - delta^2, a the "
+    "offset of (11), A_c = rho_td - a, B_s = (rho_d_td + delta A_c) / omega_D. At delta = 0 it solves (9).",
+    derived=lambda: forms(
+        (rho, geyer_damped_helpers.damped_radial_solution()[0]),
+        *geyer_damped_helpers.damped_radial_solution()[1].items(),
+    ),
+    extension=True,
+)
+def check_damped_solution() -> None:
+    """Printed: nothing (the report's leg is lossless).
+    Stated: the solution above; checked to solve the equation and to start at the touchdown state."""
+    h = geyer_damped_helpers
+    rho_t, coeffs = h.damped_radial_solution()
+    wn2, rhs = h.damped_radial_equation()
+    full = rho_t.subs({h.A_C: coeffs[h.A_C], h.B_S: coeffs[h.B_S]})
+    residual = full.diff(t, 2) + 2 * DELTA * full.diff(t) + (h.OMEGA_D**2 + DELTA**2) * (full - a)
+    expect_zero(residual, "rho(t) - a solves the homogeneous damped equation")
+    expect_zero(coeffs[a] * wn2 - rhs, "omega_n^2 a is the constant side: rho = a is the particular solution")
+    expect_zero(full.subs(t, 0) - h.RHO_TD, "rho(0) = rho_td")
+    expect_zero(full.diff(t).subs(t, 0) - h.RHO_D_TD, "rho'(0) = rho_d_td")
+    expect_zero(coeffs[a] - geyer.radial_solution_parameters()["a"], "the offset is (11)'s a")
+    # delta = 0: rho'^2 - (lambda rho^2 + mu rho + nu) is constant in time, the first integral (9)
+    lam_, mu_ = -(h.OMEGA_D**2), 2 * a * h.OMEGA_D**2  # (9) in omega_n = omega_D at delta = 0
+    lossless = full.subs(DELTA, 0)
+    integral = lossless.diff(t) ** 2 - lam_ * lossless**2 - mu_ * lossless
+    expect_zero(integral.diff(t), "at delta = 0, rho'^2 - lambda rho^2 - mu rho is conserved (9)")
+
+
+@equation(
+    "sec3.1-dampedevents",
+    "damped bottom time and liftoff force (not in the report)",
+    "verified",
+    "Not printed in the report: rho' = exp(-delta t) (P cos(omega_D t) + R sin(omega_D t)) is 0 first at "
+    "omega_D t_b = pi/2 + atan(R / P) (P = rho_d_td < 0); liftoff (option force) where the leg force "
+    "k (l0 - q_r) - c q_rd = -m l0 (omega0^2 rho + 2 delta rho') falls to 0, a root, not a closed form.",
+    derived=lambda: forms(
+        (sp.Symbol("t_bottom"), geyer_damped_helpers.damped_events()["t_bottom"]),
+        (sp.Symbol("F_leg") / (m * l0), geyer_damped_helpers.damped_events()["force"]),
+    ),
+    extension=True,
+)
+def check_damped_events() -> None:
+    """Printed: nothing (the report's leg is lossless).
+    Stated: the bottom time and the leg force above; rho'(t_b) = 0, P = rho_d_td, and at delta = 0
+    the bottom of (13) (omega_n t_b = pi/2 + asin(A_c / b), b^2 = A_c^2 + (rho_d_td / omega_n)^2)."""
+    h = geyer_damped_helpers
+    ev = h.damped_events()
+    _, coeffs = h.damped_radial_solution()
+    expect_zero(ev["cos"].subs(h.B_S, coeffs[h.B_S]).subs(h.A_C, coeffs[h.A_C]) - h.RHO_D_TD, "P = rho_d_td")
+    at_bottom = sp.expand_trig(ev["rate"].subs(t, ev["t_bottom"]))
+    expect_zero(at_bottom, "rho'(t_b) = 0")
+    q_r_of = l0 * (1 + rho)
+    force = k * (l0 - q_r_of) - c * l0 * rho_d
+    stated = ev["force"]
+    rho_t, _ = h.damped_radial_solution()
+    expect_zero(
+        force.subs({rho: rho_t, rho_d: ev["rate"], k: m * omega0**2, c: 2 * m * DELTA}) / (m * l0) - stated,
+        "the leg force over m l0 is -(omega0^2 rho + 2 delta rho')",
+    )
+    point = {h.RHO_TD: -0.01, h.RHO_D_TD: -0.4, a: 0.05, h.OMEGA_D: 20.0, DELTA: 0}
+    amplitude = sp.sqrt(0.06**2 + (0.4 / 20.0) ** 2)
+    lossless = (sp.pi / 2 + sp.asin(-0.06 / amplitude)) / 20.0
+    t_b = ev["t_bottom"].subs(h.B_S, coeffs[h.B_S]).subs(h.A_C, coeffs[h.A_C]).subs(point)
+    expect(abs(sp.N(t_b - lossless)) < 1e-14, "at delta = 0 the bottom time is (13)'s")
+
+
+@equation(
+    "sec3.1-dampedangle",
+    "damped leg angle q_th(t) (not in the report)",
+    "verified",
+    "Not printed in the report: (18)-(19) over the damped rho, the angular momentum conserved (the damper "
+    "exerts no torque about the toe): q_th - q_th_td = int_0^t omega (1 - 2 rho), closed form.",
+    derived=lambda: forms((q_th - q_th_td, geyer_damped_helpers.damped_leg_angle())),
+    extension=True,
+)
+def check_damped_angle() -> None:
+    """Printed: nothing (the report's leg is lossless).
+    Stated: the integral above; its derivative is omega (1 - 2 rho(t)) and it is 0 at touchdown."""
+    h = geyer_damped_helpers
+    angle = h.damped_leg_angle()
+    rho_t, _ = h.damped_radial_solution()
+    expect_zero(angle.diff(t) - omega * (1 - 2 * rho_t), "d/dt q_th = omega (1 - 2 rho)")
+    expect_zero(angle.subs(t, 0), "q_th(0) = q_th_td")
+    expect_zero(
+        mechanics.euler_lagrange_polar(k, g_s, c)[1] - mechanics.euler_lagrange_polar()[1],
+        "the damper leaves the angular equation (3), so the angular momentum under Assumption 1",
+    )
 
 
 # --------------------------------------------------------------------------------------------
