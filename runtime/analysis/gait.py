@@ -266,8 +266,10 @@ def energy_of(params: SlipParams, apex_height: float, apex_speed: float) -> floa
 
 def check_conservative(params: SlipParams) -> None:
     """ValueError unless a step conserves the flight energy (k_c == k_d, g_s == g_f, q_r_td == q_r_lo,
-    no leg damping: c == 0)."""
+    no leg damping: c == 0: ``SlipParams.conserves_energy``), naming what breaks it."""
     check_params(params)
+    if params.conserves_energy:
+        return
     if params.c != 0.0:
         raise ValueError(
             f"fixed_points needs a step that conserves the apex energy (c == 0), got c={params.c!r}: the leg "

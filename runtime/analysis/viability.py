@@ -231,12 +231,7 @@ def _grids(params, apex_height, touchdown_angle, apex_speed, energy, k_d, retrac
             raise ValueError(
                 "a k_d grid changes the energy every step (k_c != k_d): give apex_speed, not energy"
             )
-        if not (
-            params.constant_stiffness
-            and params.g_s == params.g_f
-            and params.q_r_td == params.q_r_lo
-            and params.c == 0.0
-        ):
+        if not params.conserves_energy:
             raise ValueError(
                 "a fixed energy needs a step that conserves it (k_c = k_d, g_s = g_f, q_r_td = q_r_lo, "
                 "no leg damping c = 0): give apex_speed instead"
