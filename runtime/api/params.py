@@ -175,8 +175,8 @@ class SlipParams:
 
     @property
     def conserves_energy(self) -> bool:
-        """True when a step keeps the flight energy m (g_f h + v^2/2): k_c == k_d, g_s == g_f,
-        q_r_td == q_r_lo and no leg damping (c == 0)."""
+        """True when a step keeps the flight energy m (g_f h + v^2/2), that is when k_c == k_d,
+        g_s == g_f, q_r_td == q_r_lo and there is no leg damping (c == 0)."""
         same = self.g_s == self.g_f and self.q_r_td == self.q_r_lo
         return self.constant_stiffness and same and self.c == 0.0
 
