@@ -394,7 +394,8 @@ def build_files() -> dict[str, str]:
     files["docs/equations.json"] = render_equation_record()
     files["docs/maps.md"] = docs.maps_page(index)
     files.update(family_pages())
-    damping = (ROOT / "docs/damping.md").read_text()
+    # the page may be a family page too (geyer-damped's): its equations are already in ``files``
+    damping = files.get("docs/damping.md") or (ROOT / "docs/damping.md").read_text()
     files["docs/damping.md"] = docs.replace_between(
         damping, "maps", docs.parameter_maps(index, "c"), "docs/damping.md"
     )

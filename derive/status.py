@@ -64,4 +64,10 @@ STATUS_CODES: tuple[tuple[str, int, str], ...] = (
         "the swinging leg does not meet the ground from above with |q_th| < pi/2 (the retraction rate "
         "sweeps the foot away from the ground or the leg past the horizontal)",
     ),
+    (
+        "OVERDAMPED",
+        17,
+        "the leg damping reaches the critical damping of the approximate radial oscillation (delta >= "
+        "omega_n): no damped oscillation to lift off from",
+    ),
 )

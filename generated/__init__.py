@@ -14,6 +14,8 @@ Modules:
     flight: Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2).
     geyer: Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
         kernels.
+    geyer_damped: Geyer et al.'s map with leg damping (damped radial oscillator per half) (report section
+        3.1): stance, state-at-time and apex-return kernels.
     gravity: Gravity corrections types 0-4 (report sections 4.1-4.5): the stance, state-at-time and
         apex-return kernels of the maps gravity-type0, gravity-type1, gravity-type2, gravity-type3,
         gravity-type4 (one body, derive/share.py).
@@ -31,6 +33,8 @@ Modules:
         kernels, and for a map its stance and apex-return Jacobians.
     geyer_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels,
         and for a map its stance and apex-return Jacobians.
+    geyer_damped_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        geyer_damped: JVP kernels, and for a map its stance and apex-return Jacobians.
     geyer_vs_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP
         kernels, and for a map its stance and apex-return Jacobians.
     gravity_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity: JVP

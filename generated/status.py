@@ -36,6 +36,7 @@ class Status(IntEnum):
     ENERGY_DEFICIT = 14
     IMAGINARY_MOMENTUM = 15
     NO_TOUCHDOWN = 16
+    OVERDAMPED = 17
 
     def __str__(self) -> str:
         return self.name
@@ -66,6 +67,7 @@ STATUS_NOT_CONVERGED = 13
 STATUS_ENERGY_DEFICIT = 14
 STATUS_IMAGINARY_MOMENTUM = 15
 STATUS_NO_TOUCHDOWN = 16
+STATUS_OVERDAMPED = 17
 
 #: Human-readable message for each status code.
 MESSAGES = {
@@ -93,4 +95,6 @@ MESSAGES = {
     16: "the swinging leg does not meet the ground from above with |q_th| \u003c pi/2 (the "
         "retraction rate sweeps the foot away from the ground or the leg past the "
         "horizontal)",
+    17: "the leg damping reaches the critical damping of the approximate radial "
+        "oscillation (delta \u003e= omega_n): no damped oscillation to lift off from",
 }

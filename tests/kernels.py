@@ -18,16 +18,26 @@ import numpy as np
 from slipmaps.derive import generate
 from slipmaps.derive.ir import Kernel
 from slipmaps.derive.lower import abi
-from slipmaps.derive.params import APEX_INPUTS
+from slipmaps.derive.params import APEX_INPUTS, PARAMETERS
 
 #: An apex-return input a test does not give takes its row's default (derive/params.py): the
 #: tests written before an input existed call the kernels as they did.
 DEFAULTS = {r["arg"]: float(r["default"]) for r in APEX_INPUTS if "default" in r}
+#: The parameters the report's model leaves out (the leg damping c) at the value it assumes: a
+#: parameter record's field not given takes it (every other field not given is NaN).
+UNMODELLED = {r["name"]: float(r["unmodelled"]) for r in PARAMETERS if "unmodelled" in r}
 
 
 def _value(values: Mapping[str, float], name: str) -> float:
-    """The argument ``name``: given, else the input's default (a missing required one: KeyError)."""
-    return float(values[name] if name in values or name not in DEFAULTS else DEFAULTS[name])
+    """The argument ``name``: given, else the input's default or the value the report's model assumes
+    (:data:`UNMODELLED`; a missing required one: KeyError)."""
+    if name in values:
+        return float(values[name])
+    if name in DEFAULTS:
+        return DEFAULTS[name]
+    if name in UNMODELLED:
+        return UNMODELLED[name]
+    return float(values[name])
 
 
 @cache
@@ -70,10 +80,10 @@ def invoke(kernel: Kernel, values: Mapping[str, float], fn=None) -> tuple:
 
 def call_layouts(fn, x: Sequence[str], p: Sequence[str], width: int, values: Mapping[str, float]) -> tuple:
     """A role kernel ``fn(x, p, out) -> status`` with its layouts filled by name from ``values``
-    (``x`` the inputs' names, ``p`` the parameter record's: a field not given is NaN); its
-    ``width`` outputs, then its status."""
+    (``x`` the inputs' names, ``p`` the parameter record's: a field not given is NaN, or the value
+    the report's model assumes, :data:`UNMODELLED`); its ``width`` outputs, then its status."""
     xs = np.array([_value(values, a) for a in x])
-    ps = np.array([float(values.get(f, math.nan)) for f in p] or [math.nan])
+    ps = np.array([float(values.get(f, UNMODELLED.get(f, math.nan))) for f in p] or [math.nan])
     out = np.empty(width)
     status = fn(xs, ps, out)
     return (*map(float, out), int(status))

@@ -144,6 +144,17 @@ def test_c_kernels_match_numba(clib, case):
     assert checked > 0
 
 
+@pytest.mark.parametrize("name", [m.name for m in slipmaps.maps() if "c" in m.params and m.name != "exact"])
+def test_c_kernels_match_numba_with_leg_damping(clib, name):
+    """A map that takes the leg damping c, at 10 % of the human runner's critical damping: C equals
+    numba as at c = 0 (the other cases run the human runner, c = 0)."""
+    call = Call.of(name, slipmaps.HUMAN_RUNNER.with_(c=253.0), {})
+    checked = 0
+    for seed, (_role, spec) in enumerate(sorted(call.kernels.items())):
+        checked += _agree(clib, spec, call.record(spec)[None, :], N_CHOICE, seed, {})
+    assert checked > 0
+
+
 def test_c_model_kernels_match_numba(clib):
     for seed, (name, spec) in enumerate(sorted(model_kernels().items())):
         X = states(spec.x, 20_000, seed)

@@ -78,8 +78,16 @@ def test_every_entry_has_a_subsection_and_derived_forms_are_equations():
 #: (measured when the forms were added: exact, geyer, type5 all; gravity 31 of 34, the two claims and
 #: the empty (69) as text; iterative 46 of 61, the definitions (34), (36)-(40), (120)-(122), (128),
 #: (144), the theorem (35) and the bottom (152)-(154) as text; variable 27 of 36, (106)-(113) and
-#: the empty (95) as text).
-MIN_MATH_SHARE = {"exact": 1.0, "geyer": 1.0, "type5": 1.0, "gravity": 0.9, "iterative": 0.7, "variable": 0.7}
+#: the empty (95) as text; damping, section 3.1 with the damped extensions, all 33).
+MIN_MATH_SHARE = {
+    "exact": 1.0,
+    "geyer": 1.0,
+    "type5": 1.0,
+    "gravity": 0.9,
+    "iterative": 0.7,
+    "variable": 0.7,
+    "damping": 1.0,
+}
 
 
 def _rendered(block: str) -> dict[str, bool]:

@@ -1,11 +1,14 @@
-"""Geyer et al.'s radial solution with leg damping (derive/maps/geyer_damped_helpers.py, registry
-entries sec3.1-damped*), evaluated from its SymPy closed forms against the exact damped map.
+"""Geyer et al.'s map with leg damping, ``geyer-damped`` (derive/maps/geyer_damped.py, on the
+radial solution of derive/maps/geyer_damped_helpers.py, registry entries sec3.1-damped*), against
+its own derivation and against the exact damped map.
 
-No generated map evaluates it yet: here the derivation's rho(t), rho'(t), leg angle and bottom time
-are lambdified, liftoff (option ``force``: the leg force k (l0 - q_r) - c q_rd falls to 0, or
-q_r = q_r_lo if first) is the root of the derived force between the bottom and half a damped period
-later, and the exact flights (closed form) take the body from the apex to touchdown and from
-liftoff to the next apex. The ground truth is ``slipmaps.apex_return("exact", ...)`` with the same c.
+The derivation's closed forms (rho(t), rho'(t), the leg angle and the bottom time) are lambdified
+here, liftoff (option ``force``: the leg force k (l0 - q_r) - c q_rd falls to 0, or q_r = q_r_lo if
+first) is the root of the derived force between the bottom and half a damped period later by
+``brentq``, and the exact flights (closed form) take the body from the apex to touchdown and from
+liftoff to the next apex: an evaluation of the derivation independent of the generated kernels (the
+IR, the code generator, the safeguarded Newton of the map's liftoff). The ground truth is
+``slipmaps.apex_return("exact", ...)`` with the same c.
 """
 
 from __future__ import annotations
@@ -78,44 +81,120 @@ def damped_geyer_apex(p: SlipParams, height: float, speed: float, angle: float) 
     return q_r * math.cos(q_th) + max(y_d, 0.0) ** 2 / (2.0 * p.g_f), x_d
 
 
-def next_apex_errors(p: SlipParams) -> np.ndarray:
-    """Relative next-apex errors (the larger of height and speed) over :data:`STEPS`."""
+def _apex(name: str, p: SlipParams, height: float, speed: float, angle: float, **options):
+    res = slipmaps.apex_return(
+        name, p, apex_height=height, apex_speed=speed, touchdown_angle=angle, **options
+    )
+    assert res.status == Status.OK, (name, res.message, height, speed, angle, options)
+    return res.values["next_apex_height"], res.values["next_apex_speed"]
+
+
+def _ratio(zeta: float) -> SlipParams:
+    """The human runner with the damping ratio c / (2 sqrt(k m)) = ``zeta``."""
+    return HUMAN_RUNNER.with_(c=zeta * 2.0 * math.sqrt(HUMAN_RUNNER.k * HUMAN_RUNNER.m))
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.05, 0.2])
+def test_geyer_damped_map_is_its_derivation(zeta):
+    """The generated map's next apex equals the lambdified closed forms (measured at most 5.7e-14 m,
+    m/s over the 45 steps at ratios 0-0.2)."""
+    p = _ratio(zeta)
+    for step in STEPS:
+        got = _apex("geyer-damped", p, *step)
+        want = damped_geyer_apex(p, *step)
+        assert abs(got[0] - want[0]) < 1e-12 and abs(got[1] - want[1]) < 1e-12, (step, got, want)
+
+
+def test_geyer_damped_at_c0_is_geyers_map():
+    """At c = 0 the damped map is Geyer et al.'s (11), (19), (17) split at the bottom: the ``geyer``
+    map's next apex to round-off (measured 3.0e-14 m, m/s), not bit for bit (other closed forms)."""
+    p = HUMAN_RUNNER.with_(c=0.0)
+    for step in STEPS:
+        got, want = _apex("geyer-damped", p, *step), _apex("geyer", p, *step)
+        assert abs(got[0] - want[0]) < 1e-12 and abs(got[1] - want[1]) < 1e-12, (step, got, want)
+
+
+def next_apex_errors(p: SlipParams, **options) -> np.ndarray:
+    """Relative next-apex errors of ``geyer-damped`` (the larger of height and speed) over :data:`STEPS`."""
     errors = []
-    for height, speed, angle in STEPS:
-        ref = slipmaps.apex_return("exact", p, apex_height=height, apex_speed=speed, touchdown_angle=angle)
-        assert ref.status == Status.OK, (height, speed, angle)
-        got_h, got_v = damped_geyer_apex(p, height, speed, angle)
-        errors.append(
-            max(
-                abs(got_h - ref.values["next_apex_height"]) / ref.values["next_apex_height"],
-                abs(got_v - ref.values["next_apex_speed"]) / abs(ref.values["next_apex_speed"]),
-            )
-        )
+    for step in STEPS:
+        ref_h, ref_v = _apex("exact", p, *step)
+        got_h, got_v = _apex("geyer-damped", p, *step, **options)
+        errors.append(max(abs(got_h - ref_h) / ref_h, abs(got_v - ref_v) / abs(ref_v)))
     return np.array(errors)
 
 
-def test_damped_solution_at_c0_is_geyers_map():
-    """At c = 0 the damped closed forms are Geyer et al.'s (11), (19), (17): the generated map's next
-    apex to round-off (measured 1.2e-14 m, m/s)."""
-    p = HUMAN_RUNNER.with_(c=0.0)
-    for height, speed, angle in STEPS:
-        res = slipmaps.apex_return("geyer", p, apex_height=height, apex_speed=speed, touchdown_angle=angle)
-        assert res.status == Status.OK
-        got_h, got_v = damped_geyer_apex(p, height, speed, angle)
-        assert abs(got_h - res.values["next_apex_height"]) < 1e-12
-        assert abs(got_v - res.values["next_apex_speed"]) < 1e-12
+#: (gravity option, damping ratio c / (2 sqrt(k m))) -> (measured mean, measured max) relative
+#: next-apex error over STEPS (45 steps); the bound asserted is the measurement plus a fifth, and the
+#: issue's target (5 %) for the map without a correction.
+MEASURED = {
+    ("none", 0.0): (0.0097, 0.0313),
+    ("none", 0.02): (0.0088, 0.0251),
+    ("none", 0.05): (0.0092, 0.0290),
+    ("none", 0.1): (0.0137, 0.0364),
+    ("none", 0.2): (0.0244, 0.0478),
+    ("type3", 0.0): (0.0141, 0.0498),
+    ("type3", 0.02): (0.0121, 0.0432),
+    ("type3", 0.05): (0.0096, 0.0349),
+    ("type3", 0.1): (0.0066, 0.0242),
+    ("type3", 0.2): (0.0033, 0.0112),
+    ("type4", 0.0): (0.0129, 0.0470),
+    ("type4", 0.02): (0.0110, 0.0406),
+    ("type4", 0.05): (0.0086, 0.0325),
+    ("type4", 0.1): (0.0056, 0.0223),
+    ("type4", 0.2): (0.0025, 0.0100),
+}
 
 
-#: Damping ratio c / (2 sqrt(k m)) -> (measured mean, measured max) relative next-apex error over
-#: STEPS (45 steps), the bound asserted being the max plus a fifth: the issue's target is 5 %.
-MEASURED = {0.02: (0.0088, 0.0251), 0.05: (0.0092, 0.0290), 0.1: (0.0137, 0.0364), 0.2: (0.0244, 0.0478)}
-
-
-@pytest.mark.parametrize("ratio", sorted(MEASURED))
-def test_damped_geyer_accuracy_against_exact_damped_map(ratio):
-    p = HUMAN_RUNNER.with_(c=ratio * 2.0 * math.sqrt(HUMAN_RUNNER.k * HUMAN_RUNNER.m))
-    errors = next_apex_errors(p)
+@pytest.mark.parametrize(("gravity", "zeta"), sorted(MEASURED), ids=lambda x: str(x))
+def test_geyer_damped_accuracy_against_exact_damped_map(gravity, zeta):
+    errors = next_apex_errors(_ratio(zeta), gravity=gravity)
     assert len(errors) == len(STEPS) == 45
-    mean, worst = MEASURED[ratio]
+    mean, worst = MEASURED[(gravity, zeta)]
     assert errors.mean() <= 1.2 * mean, errors.mean()
-    assert errors.max() <= min(1.2 * worst, 0.05), errors.max()
+    assert errors.max() <= (min(1.2 * worst, 0.05) if gravity == "none" else 1.2 * worst), errors.max()
+
+
+def test_force_liftoff_is_the_leg_forces_zero():
+    """With ``liftoff="force"`` the leg lifts off where k_d (l0 - q_r) - c q_rd = 0, before q_r = l0
+    (measured at most 2.3e-10 N over the 15 steps at 1 m apex height, 10 % critical); with
+    ``"length"`` at q_r = q_r_lo exactly."""
+    p = _ratio(0.1)
+    steps = [s for s in STEPS if s[0] == 1.0]
+    assert len(steps) == 15
+    for height, speed, angle in steps:
+        # the touchdown at q_r = l0 after the exact descent from the apex (as damped_geyer_apex)
+        b_y, b_x = p.l0 * math.cos(angle), -p.l0 * math.sin(angle)
+        b_yd = -math.sqrt(2.0 * p.g_f * (height - b_y))
+        touchdown = (p.l0, (b_x * speed + b_y * b_yd) / p.l0, angle, (b_x * b_yd - speed * b_y) / p.l0**2)
+        force = slipmaps.stance("geyer-damped", p, touchdown)
+        length = slipmaps.stance("geyer-damped", p, touchdown, liftoff="length")
+        leg = p.k_d * (p.l0 - force["liftoff_q_r"]) - p.c * force["liftoff_q_rd"]
+        assert abs(leg) < 1e-8, leg
+        assert force["liftoff_q_r"] < p.l0 and force["t_stance"] < length["t_stance"]
+        assert length["liftoff_q_r"] == p.q_r_lo
+
+
+def test_overdamped_leg_is_its_own_status():
+    """A leg damped beyond the approximate oscillator's critical damping (delta >= omega_n) has no
+    damped oscillation: status OVERDAMPED, outputs NaN, one line naming it."""
+    res = slipmaps.apex_return("geyer-damped", _ratio(1.5), 1.0, 5.0, 0.4)
+    assert res.status == Status.OVERDAMPED and not res.ok
+    assert math.isnan(res.values["next_apex_height"])
+    assert "critical damping" in res.message
+
+
+def test_deadbeat_finds_a_damped_gait_with_geyer_damped():
+    """The deadbeat step on geyer-damped finds the k_d that puts back what the damper takes (10 %
+    critical: measured 35.4 kN/m at 0.355 rad against the exact map's 37.3 kN/m at 0.347 rad), and the
+    exact map, run with that plan, keeps the speed within 1 % (measured 0.3 %)."""
+    p = HUMAN_RUNNER.with_(c=253.0)
+    plan = slipmaps.deadbeat("geyer-damped", p, 1.0, 5.0, 1.0, 5.0, controls=("touchdown_angle", "k_d"))
+    assert plan.status.name == "REACHED", plan.message
+    assert plan.k_d > 1.6 * p.k_c
+    exact = slipmaps.deadbeat("exact", p, 1.0, 5.0, 1.0, 5.0, controls=("touchdown_angle", "k_d"))
+    assert abs(plan.k_d / exact.k_d - 1.0) < 0.06 and abs(plan.touchdown_angle - exact.touchdown_angle) < 0.01
+    step = slipmaps.apex_return(
+        "exact", p.with_(k_d=plan.k_d), apex_height=1.0, apex_speed=5.0, touchdown_angle=plan.touchdown_angle
+    )
+    assert abs(step.values["next_apex_speed"] / 5.0 - 1.0) < 0.01, step.values

@@ -702,7 +702,7 @@ def run_batch(kernel: Kernel, env: dict, rows: np.ndarray) -> tuple[np.ndarray, 
     spec = kernel.row["kernels"][kernel.role]
     X = np.ascontiguousarray(rows, dtype=float)
     env = {**kernel.row["fixed"], **env}  # what a family member fixes (as Kernel.call)
-    P = np.array([[float(env.get(f, math.nan)) for f in spec["p"]]])
+    P = np.array([[float(env.get(f, kernels.UNMODELLED.get(f, math.nan))) for f in spec["p"]]])
     out = np.empty((n, len(kernel.outputs)))
     status = np.empty(n, dtype=np.int64)
     kernel.batch(X, P, out, status)

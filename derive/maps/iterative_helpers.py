@@ -347,10 +347,11 @@ _POLAR_NAMES = tuple(f.name for f in catalog.POLAR)
 
 def zeroth_maps() -> tuple[MapSpec, ...]:
     """The maps a zeroth iterate can come from: every declared map that is not itself iterated from
-    a zeroth iterate (:func:`~slipmaps.derive.maps.starting_maps`), in report order."""
+    a zeroth iterate (:func:`~slipmaps.derive.maps.starting_maps`) and models no leg damping (the
+    iteration adds the damper to a lossless guess), in report order."""
     from . import starting_maps
 
-    return starting_maps()
+    return tuple(s for s in starting_maps() if "c" not in s.params)
 
 
 @cache

@@ -1,0 +1,559 @@
+"""Geyer et al.'s map with leg damping (report section 3.1, extended): declaration.
+
+Not in the report: its leg is lossless. The radial solution is the damped oscillator of
+:mod:`.geyer_damped_helpers` (derived and registry-checked there): under Assumption 1 (small
+sweep; the angular momentum conserved, the damper exerting no torque about the toe) and the
+first-order Taylor step of 1/(1+rho)^3 in (4),
+
+    rho'' + 2 delta rho' + omega_n^2 rho = omega^2 - g_s / l0,
+    delta = c / (2 m), omega_n^2 = k / m + 3 omega^2,
+    rho(t) = a + exp(-delta t) (A cos(omega_D t) + B sin(omega_D t)), omega_D^2 = omega_n^2 - delta^2,
+
+one half with k_c from the touchdown state, one with k_d from the bottom state (the report's
+variable stiffness, as in section 5.1): a gait with damping needs k_d > k_c to put back what the
+damper takes. The bottom is in closed form (:func:`bottom_trig`); the leg angle is (18)-(19)'s
+integral of omega (1 - 2 rho) over the damped rho (:func:`angle_increment`), the rate the exact (17)
+with the conserved momentum, as in Geyer's map. Liftoff (option ``liftoff``, the exact map's):
+``force`` where the leg force k_d (l0 - q_r) - c q_rd falls to 0, or at q_r = q_r_lo if that comes
+first; ``length`` at q_r = q_r_lo. Both are roots of a transcendental equation, found by Newton's
+method safeguarded by bisection on [0, pi / omega_D] after the bottom, where rho increases
+(:func:`liftoff_function`).
+
+At c = 0 the map is Geyer's radial solution (11) split at its bottom, which agrees with ``geyer``
+(k_c = k_d) to rounding (not bit for bit: ``geyer`` evaluates (11)-(14) in its own closed forms).
+An overdamped leg (delta >= omega_n in a half) has no oscillation: status OVERDAMPED.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from .. import catalog
+from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, Switch, sym
+from ..mapspec import MapBuild, MapInputs, MapSpec, Option
+from ..symbols import a, c, l0, m, omega, omega0, q_r_lo, q_r_td, q_rd_td, q_th_td, q_thd_td, t
+from .exact import LIFTOFF
+from .geyer_damped_helpers import (
+    A_C,
+    B_S,
+    DELTA,
+    OMEGA_D,
+    RHO_D_TD,
+    RHO_TD,
+    damped_leg_angle,
+    damped_radial_equation,
+    damped_radial_solution,
+)
+from .gravity import MOMENTUM_SCALE, half_impulses, iterations_option, tol_option
+
+__all__ = [
+    "MAPS",
+    "PAGE",
+    "angle_increment",
+    "average_offset",
+    "bottom_trig",
+    "liftoff_function",
+    "liftoff_kernel",
+    "radial_state",
+]
+
+#: Placeholders of cos(omega_D t), sin(omega_D t) and exp(-delta t) at an event, so that each is
+#: evaluated once at run time.
+_COS, _SIN, _EXP = sp.symbols("C S X", real=True)
+#: delta = c / (2 m), a kernel variable.
+_DELTA = sym("delta")
+_K_C, _K_D = catalog.PARAMS["k_c"].symbol, catalog.PARAMS["k_d"].symbol
+
+
+def _trig(expr: sp.Basic) -> sp.Basic:
+    """``expr`` with cos(omega_D t), sin(omega_D t), exp(+-delta t) replaced by the placeholders."""
+    expr = sp.expand(expr)
+    return expr.subs({sp.cos(OMEGA_D * t): _COS, sp.sin(OMEGA_D * t): _SIN}).subs(
+        {sp.exp(-DELTA * t): _EXP, sp.exp(DELTA * t): 1 / _EXP}
+    )
+
+
+@cache
+def radial_state() -> tuple[sp.Basic, sp.Basic, sp.Basic]:
+    """rho, rho' and rho'' of the damped solution at a time t of its half, in the placeholders."""
+    rho_t, _ = damped_radial_solution()
+    rate = rho_t.diff(t)
+    return _trig(rho_t), _trig(rate), _trig(rate.diff(t))
+
+
+@cache
+def angle_increment() -> sp.Basic:
+    """(18)-(19) over a half: q_th(t) - q_th(0) = int_0^t omega (1 - 2 rho), in the placeholders."""
+    cos_, sin_, decay = sp.cos(OMEGA_D * t), sp.sin(OMEGA_D * t), sp.exp(-DELTA * t)
+    oscillation = A_C * (DELTA * cos_ - OMEGA_D * sin_) + B_S * (DELTA * sin_ + OMEGA_D * cos_)
+    start = A_C * DELTA + B_S * OMEGA_D
+    form = omega * (t * (1 - 2 * a) + 2 * (decay * oscillation - start) / (DELTA**2 + OMEGA_D**2))
+    assert sp.simplify(form - damped_leg_angle()) == 0
+    return form.subs({cos_: _COS, sin_: _SIN, decay: _EXP})
+
+
+@cache
+def bottom_trig() -> dict[sp.Symbol, sp.Basic]:
+    """cos and sin of omega_D t_b at the bottom of the compression half, rho' = 0.
+
+    rho' = exp(-delta t) (P cos(omega_D t) + R sin(omega_D t)) with P = rho'(0) < 0 (compressing):
+    its first zero is omega_D t_b = pi/2 + atan(R / P) in (0, pi), where cos = R / h and
+    sin = -P / h, h = sqrt(P^2 + R^2) (the kernel: with r = R / P, -r / sqrt(1 + r^2) and
+    1 / sqrt(1 + r^2))."""
+    _, rate, _ = radial_state()
+    scaled = sp.expand(rate / _EXP)
+    p_, r_ = scaled.coeff(_COS), scaled.coeff(_SIN)
+    assert sp.simplify(scaled - p_ * _COS - r_ * _SIN) == 0
+    coeffs = damped_radial_solution()[1]
+    assert sp.simplify(p_.subs({A_C: coeffs[A_C], B_S: coeffs[B_S]}) - RHO_D_TD) == 0
+    h = sp.sqrt(p_**2 + r_**2)
+    return {"P": p_, "R": r_, _COS: r_ / h, _SIN: -p_ / h}
+
+
+@cache
+def average_offset() -> sp.Basic:
+    """int_0^t (rho - a) dtau / t over a half (for type 4's average leg length), in the placeholders
+    at its end t."""
+    rho_t, _ = damped_radial_solution()
+    tau = sp.Symbol("tau", positive=True)
+    cos_, sin_, decay = sp.cos(OMEGA_D * t), sp.sin(OMEGA_D * t), sp.exp(-DELTA * t)
+    form = (
+        A_C * (DELTA + decay * (OMEGA_D * sin_ - DELTA * cos_))
+        + B_S * (OMEGA_D - decay * (DELTA * sin_ + OMEGA_D * cos_))
+    ) / (DELTA**2 + OMEGA_D**2)
+    integral = sp.integrate(sp.expand(rho_t - a).subs(t, tau), (tau, 0, t))
+    assert sp.simplify(form - integral) == 0
+    return (form / t).subs({cos_: _COS, sin_: _SIN, decay: _EXP})
+
+
+def _names(prefix: str) -> dict[sp.Symbol, sp.Symbol]:
+    return {x: sym(prefix + x.name) for x in (a, OMEGA_D, A_C, B_S)}
+
+
+def _bind(expr: sp.Basic, prefix: str, values: dict) -> sp.Basic:
+    """``expr`` of a half in the kernel's names (``prefix``: the half's), then ``values`` (all at
+    once)."""
+    names = {**_names(prefix), DELTA: _DELTA}
+    return expr.subs(names, simultaneous=True).subs(values, simultaneous=True)
+
+
+def _half(prefix: str, stiffness: sp.Basic, rate: sp.Basic, rho0: sp.Basic, rhod0: sp.Basic) -> Stage:
+    """The damped oscillator of one half (angular rate ``rate``) from its initial (rho0, rhod0): the
+    offset a, omega_D and the amplitudes A, B, named ``prefix`` + a, omega_D, A_c, B_s."""
+    wn2, rhs = damped_radial_equation()
+    _, coeffs = damped_radial_solution()
+    n = _names(prefix)
+    at = {omega0: sp.sqrt(stiffness / m), omega: rate}
+    wd2 = sym(prefix + "omega_D2")
+    start = {RHO_TD: rho0, RHO_D_TD: rhod0}
+    return Stage(
+        (
+            (n[a], (rhs / wn2).subs(at)),
+            (wd2, wn2.subs(at) - _DELTA**2),
+            (n[OMEGA_D], sp.sqrt(wd2)),
+            (n[A_C], _bind(coeffs[A_C], prefix, start)),
+            (n[B_S], _bind(coeffs[B_S], prefix, start)),
+        ),
+        (Guard(wd2 > 0, "OVERDAMPED", "omega_D^2 = omega_n^2 - delta^2 > 0 (an underdamped leg)"),),
+        comment=f"the damped radial solution of the {prefix.rstrip('_').split('_')[-1]} half",
+    )
+
+
+@cache
+def liftoff_function() -> tuple[sp.Basic, sp.Basic, sp.Basic]:
+    """g(t), g'(t) after the bottom, whose first zero is liftoff, and the condition that the force
+    decides it (rho increases on [0, pi / omega_D] there: rho' = -A (omega_n^2 / omega_D)
+    exp(-delta t) sin(omega_D t), A < 0).
+
+    ``length``: g = rho - rho_lo. ``force``: the leg force k_d (l0 - q_r) - c q_rd over k_d l0 is
+    -(rho + 2 delta rho' / omega0^2); liftoff is the first of its zero and rho = rho_lo, so
+    g = rho + max(2 delta rho' / omega0^2, -rho_lo) (at c = 0, rho - rho_lo: the same liftoff). A
+    tie (c = 0, q_r_lo = l0) counts as the force's: the same state, and the derivatives with respect
+    to c those from above (c -> 0+), as the exact map's."""
+    rho_, rate, acc = radial_state()
+    rho_lo = q_r_lo / l0 - 1
+    w0sq = _K_D / m
+    pull = 2 * DELTA * rate / w0sq
+    by_force = (pull >= -rho_lo) & LIFTOFF.is_("force")
+    g = rho_ + sp.Piecewise((pull, by_force), (-rho_lo, True))
+    dg = rate + sp.Piecewise((2 * DELTA * acc / w0sq, by_force), (0, True))
+    return g, dg, by_force
+
+
+#: The outputs of :func:`liftoff_kernel`.
+_LIFTOFF_OUT = ("tau", "cos_t", "sin_t", "exp_t", "by_force")
+
+
+@cache
+def liftoff_kernel() -> Kernel:
+    """Liftoff after the bottom: the first zero of :func:`liftoff_function`'s g on (0, pi / omega_D),
+    by Newton's method safeguarded by bisection on its bracket."""
+    g, dg, by_force = liftoff_function()
+    args = tuple(
+        Arg(sym(x.name), doc)
+        for x, doc in (
+            (a, "offset a of the decompression half's rho(t)"),
+            (OMEGA_D, "its damped frequency omega_D [rad/s]"),
+            (A_C, "its amplitude A of exp(-delta t) cos(omega_D t)"),
+            (B_S, "its amplitude B of exp(-delta t) sin(omega_D t)"),
+        )
+    ) + (
+        Arg(_DELTA, "decay rate delta = c / (2 m) [1/s]"),
+        catalog.PARAMS["m"],
+        catalog.PARAMS["l0"],
+        catalog.PARAMS["k_d"],
+        catalog.PARAMS["q_r_lo"],
+        LIFTOFF.arg(),
+    )
+    plain = {x: sym(x.name) for x in (a, OMEGA_D, A_C, B_S)}
+    w_d = plain[OMEGA_D]
+
+    def bind(expr, values):
+        return expr.subs({**plain, DELTA: _DELTA}, simultaneous=True).subs(values, simultaneous=True)
+
+    tau, lo, hi, half = sym("tau"), sym("_lo"), sym("_hi"), sym("_half")
+    cos_t, sin_t, exp_t = sym("cos_t"), sym("sin_t"), sym("exp_t")
+    at_t = {_COS: cos_t, _SIN: sin_t, _EXP: exp_t}
+    g_v, g_d, newton = sym("_g"), sym("_dg"), sym("_newton")
+    lo_next, hi_next = sym("_lo_next"), sym("_hi_next")
+    rho_lo = q_r_lo / l0 - 1
+    guess = (rho_lo - plain[a]) / (plain[A_C] * sp.exp(-_DELTA * half / 2))
+    guess = sp.Piecewise((-1, guess < -1), (1, guess > 1), (guess, True))
+    # g at the bottom (rho' = 0) and half a damped period later (rho' = 0 again)
+    g_start = bind(g, {_COS: 1, _SIN: 0, _EXP: 1})
+    g_end = bind(g, {_COS: -1, _SIN: 0, _EXP: sp.exp(-_DELTA * half)})
+    return Kernel(
+        name="damped_liftoff",
+        summary="Liftoff of the damped decompression half: the first zero of the leg force (or of "
+        "q_r - q_r_lo) after the bottom, safeguarded Newton.",
+        equations=(),
+        args=args,
+        steps=(
+            Stage(
+                ((half, sp.pi / w_d),),
+                (
+                    Guard(plain[A_C] < 0, "RECOMPRESSION", "the k_d spring extends the leg at the bottom"),
+                    Guard(g_start < 0, "NO_LIFTOFF", "the bottom lies below the liftoff"),
+                    Guard(g_end > 0, "NO_LIFTOFF", "the leg reaches liftoff within half a damped period"),
+                ),
+                comment="liftoff lies in (0, pi / omega_D) after the bottom, where rho increases",
+            ),
+            Iterate(
+                state=((tau, sp.acos(guess) / w_d),),
+                # the bracket moves every pass but stays out of the convergence test: at c = 0 the
+                # guess is the root and one pass confirms it
+                carry=((lo, sp.S.Zero, lo_next), (hi, half, hi_next)),
+                evaluate=(
+                    Stage(
+                        (
+                            (cos_t, sp.cos(w_d * tau)),
+                            (sin_t, sp.sin(w_d * tau)),
+                            (exp_t, sp.exp(-_DELTA * tau)),
+                            (g_v, bind(g, at_t)),
+                            (g_d, bind(dg, at_t)),
+                        )
+                    ),
+                ),
+                body=(
+                    Stage(
+                        (
+                            (lo_next, sp.Piecewise((tau, g_v < 0), (lo, True))),
+                            (hi_next, sp.Piecewise((hi, g_v < 0), (tau, True))),
+                            (newton, tau - g_v / g_d),
+                            (
+                                sym("_tau_next"),
+                                sp.Piecewise(
+                                    (newton, (newton >= lo_next) & (newton <= hi_next)),
+                                    ((lo_next + hi_next) / 2, True),
+                                ),
+                            ),
+                        )
+                    ),
+                ),
+                update=(sym("_tau_next"),),
+                max_iter=sp.Integer(60),
+                tol=sp.Float(1e-14),
+                scales=(half,),
+                count=sym("_passes"),
+                comment="Newton's method on g, safeguarded by bisection on its bracket",
+            ),
+            Stage(
+                ((sym("by_force"), sp.Piecewise((1, bind(by_force, at_t)), (0, True))),),
+                comment="1 where the leg force decides liftoff, 0 where q_r = q_r_lo does",
+            ),
+        ),
+        outputs=Group(
+            "",
+            (
+                Field("tau", "liftoff time after the bottom", "s"),
+                Field("cos_t", "cos(omega_D tau)", ""),
+                Field("sin_t", "sin(omega_D tau)", ""),
+                Field("exp_t", "exp(-delta tau)", ""),
+                Field("by_force", "1: the leg force's zero, 0: q_r = q_r_lo", ""),
+            ),
+        ),
+        check_inputs=False,
+        check_outputs=False,
+        module="geyer_damped",
+    )
+
+
+GRAVITY = Option(
+    "gravity",
+    "virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo], as in "
+    "geyer-vs); each half runs with its mean momentum, the rates with the momentum at that instant",
+    "none",
+    (
+        ("none", "p_th conserved (Assumption 1; the damper exerts no torque about the toe)"),
+        ("type3", "(65) per half: the trapezoid rule on the torque at the half's ends"),
+        ("type4", "(76) per half: the torque at the half's average leg length of the damped rho(t)"),
+    ),
+    roles=("accuracy-variants",),
+)
+
+
+class _Names:
+    """Kernel names of one pass (``prefix`` + name)."""
+
+    def __init__(self, prefix: str):
+        self.prefix = prefix
+
+    def __call__(self, name: str) -> sp.Symbol:
+        return sym(self.prefix + name)
+
+
+def _pass(n: _Names, P1: sp.Basic, P2: sp.Basic) -> tuple[Step, ...]:
+    """The stance with the halves' virtual gravity effects P1, P2: every STANCE output (prefixed)."""
+    rho_, rate, _ = radial_state()
+    c_, d_ = n.prefix + "c_", n.prefix + "d_"
+    cc, dd = _names(c_), _names(d_)
+    p_, r_ = (_bind(bottom_trig()[x], c_, {}) for x in ("P", "R"))
+    w1, w2 = n("omega_c"), n("omega_d")
+    tb, q_r_b, p_b = n("t_bottom"), n("bottom_q_r"), n("p_b")
+    cos_b, sin_b, exp_b = n("cos_b"), n("sin_b"), n("exp_b")
+    at_b = {_COS: cos_b, _SIN: sin_b, _EXP: exp_b, t: tb, omega: w1}
+    lo = {o: n(o) for o in _LIFTOFF_OUT}
+    at_lo = {_COS: lo["cos_t"], _SIN: lo["sin_t"], _EXP: lo["exp_t"], t: lo["tau"], omega: w2}
+    q_r_l = n("liftoff_q_r")
+    pull = 2 * DELTA * rate / (_K_D / m)
+    return (
+        Stage(
+            ((w1, (sym("p_td") + P1 / 2) / (m * l0**2)),),
+            comment="eq (7): omega of the first half, from its mean momentum",
+        ),
+        _half(c_, _K_C, w1, q_r_td / l0 - 1, q_rd_td / l0),
+        Stage(
+            (
+                (n("_P"), p_),
+                (n("_R"), r_),
+                # h = sqrt(P^2 + R^2) = -P sqrt(1 + (R/P)^2) (P < 0), free of overflow
+                (n("_r"), n("_R") / n("_P")),
+                (n("_s"), 1 / sp.sqrt(1 + n("_r") ** 2)),
+                (tb, (sp.pi / 2 + sp.atan(n("_r"))) / cc[OMEGA_D]),
+                (cos_b, -n("_r") * n("_s")),
+                (sin_b, n("_s")),
+                (exp_b, sp.exp(-_DELTA * tb)),
+                (q_r_b, l0 * (1 + _bind(rho_, c_, at_b))),
+                (n("bottom_q_rd"), sp.S.Zero),
+                (n("bottom_q_th"), q_th_td + _bind(angle_increment(), c_, at_b)),
+                (p_b, sym("p_td") + P1),
+                (n("bottom_q_thd"), p_b / (m * q_r_b**2)),
+                (w2, (p_b + P2 / 2) / (m * l0**2)),
+            ),
+            (Guard(q_r_b > 0, "FALL", "the leg collapses: bottom leg length q_r_b > 0"),),
+            comment="the bottom (rho' = 0) in closed form; (19)'s angle, (17)'s rate",
+        ),
+        _half(d_, _K_D, w2, q_r_b / l0 - 1, sp.S.Zero),
+        Call(
+            liftoff_kernel(),
+            {
+                **{x.name: dd[x] for x in (a, OMEGA_D, A_C, B_S)},
+                "delta": _DELTA,
+                **{p: catalog.PARAMS[p].symbol for p in ("m", "l0", "k_d", "q_r_lo")},
+                "liftoff": LIFTOFF.symbol,
+            },
+            {o: n.prefix + o for o in _LIFTOFF_OUT},
+            comment="liftoff: the leg force's zero (or q_r = q_r_lo) after the bottom",
+        ),
+        Stage(
+            (
+                (n("t_stance"), tb + lo["tau"]),
+                # at the force's zero rho = -2 delta rho' / omega0^2: exactly l0 at c = 0
+                (
+                    q_r_l,
+                    sp.Piecewise(
+                        (l0 * (1 - _bind(pull, d_, at_lo)), sp.Eq(lo["by_force"], 1)), (q_r_lo, True)
+                    ),
+                ),
+                (n("liftoff_q_rd"), l0 * _bind(rate, d_, at_lo)),
+                (n("liftoff_q_th"), n("bottom_q_th") + _bind(angle_increment(), d_, at_lo)),
+                (n("liftoff_q_thd"), (p_b + P2) / (m * q_r_l**2)),
+            ),
+            (Guard(sp.Abs(n("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),),
+            comment="the liftoff state: the damped solution at the root, (19)'s angle, (17)'s rate",
+        ),
+    )
+
+
+def _impulses(inp: MapInputs, n: _Names) -> Switch:
+    """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse (type 3 or 4 of section 4
+    on [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``."""
+    angles = (q_th_td, n("bottom_q_th"), n("liftoff_q_th"))
+    t_b, t_s = n("t_bottom"), n("t_stance")
+    true_lengths = (q_r_td, n("bottom_q_r"), n("bottom_q_r"), n("liftoff_q_r"))
+    P1, P2 = n("P_new1"), n("P_new2")
+    c_, d_ = n.prefix + "c_", n.prefix + "d_"
+    at_b = {_COS: n("cos_b"), _SIN: n("sin_b"), _EXP: n("exp_b"), t: t_b}
+    at_lo = {_COS: n("cos_t"), _SIN: n("sin_t"), _EXP: n("exp_t"), t: n("tau")}
+    average = (
+        l0 * (1 + _names(c_)[a] + _bind(average_offset(), c_, at_b)),
+        l0 * (1 + _names(d_)[a] + _bind(average_offset(), d_, at_lo)),
+    )
+    L1, L2 = sym(f"_{n.prefix}L1"), sym(f"_{n.prefix}L2")  # private to their branch
+    choice = GRAVITY
+    return Switch(
+        GRAVITY.symbol,
+        (
+            (choice.code("none"), (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),)),
+            (
+                choice.code("type3"),
+                (
+                    Stage(
+                        tuple(zip((P1, P2), half_impulses(t_b, t_s, angles, true_lengths), strict=True)),
+                        comment="eq (65) on each half",
+                    ),
+                ),
+            ),
+            (
+                choice.code("type4"),
+                (
+                    Stage(
+                        (
+                            (L1, average[0]),
+                            (L2, average[1]),
+                            *zip((P1, P2), half_impulses(t_b, t_s, angles, (L1, L1, L2, L2)), strict=True),
+                        ),
+                        comment="eq (76) on each half, the average leg length of the damped rho(t) on it",
+                    ),
+                ),
+            ),
+        ),
+        comment="the virtual gravity effect of each half",
+    )
+
+
+_P1, _P2 = sym("P_c_compression"), sym("P_c_decompression")
+_TRIAL = _Names("i_")
+
+
+def _steps(inp: MapInputs) -> tuple[Step, ...]:
+    return (
+        Stage(
+            ((sym("p_td"), m * q_r_td**2 * q_thd_td), (_DELTA, c / (2 * m))),
+            (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "stance starts compressing"),),
+            comment="the touchdown angular momentum; delta = c / (2 m)",
+        ),
+        Iterate(
+            state=((_P1, sp.S.Zero), (_P2, sp.S.Zero)),
+            # one pass at every iterate, the final one included (visible after the loop)
+            evaluate=_pass(_TRIAL, _P1, _P2),
+            body=(_impulses(inp, _TRIAL),),
+            update=(_TRIAL("P_new1"), _TRIAL("P_new2")),
+            max_iter=sp.Piecewise((0, GRAVITY.is_("none")), (inp.opt("iterations"), True)),
+            tol=inp.opt("tol"),
+            scales=(MOMENTUM_SCALE, MOMENTUM_SCALE),
+            count=sym("passes"),
+            fail_status="NOT_CONVERGED",
+            comment="fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)",
+            per_direction=False,
+        ),
+        Stage(
+            tuple((sym(f.name), _TRIAL(f.name)) for f in catalog.STANCE.fields()),
+            comment="the stance outputs: the pass at the final iterate",
+        ),
+    )
+
+
+def _build(inp: MapInputs) -> MapBuild:
+    steps = _steps(inp)
+
+    def state_at(time: sp.Symbol) -> tuple[Step, ...]:
+        """The polar state a time ``time`` after touchdown: the first half's damped solution before
+        the bottom, the second's after it; the rates with the momentum at that instant."""
+        rho_, rate, _ = radial_state()
+        n = _TRIAL
+        tb, ts = n("t_bottom"), n("t_stance")
+        halves = []
+        for half, t_half, th0, w in (
+            ("c_", time, q_th_td, n("omega_c")),
+            ("d_", time - tb, n("bottom_q_th"), n("omega_d")),
+        ):
+            prefix = n.prefix + half
+            at = {
+                _COS: sp.cos(_names(prefix)[OMEGA_D] * t_half),
+                _SIN: sp.sin(_names(prefix)[OMEGA_D] * t_half),
+                _EXP: sp.exp(-_DELTA * t_half),
+                t: t_half,
+                omega: w,
+            }
+            halves.append(
+                (
+                    l0 * (1 + _bind(rho_, prefix, at)),
+                    l0 * _bind(rate, prefix, at),
+                    th0 + _bind(angle_increment(), prefix, at),
+                )
+            )
+        before = time < tb
+        momentum = sp.Piecewise(
+            (sym("p_td") + _P1 * time / tb, before), (n("p_b") + _P2 * (time - tb) / (ts - tb), True)
+        )
+        return steps + (
+            Stage(
+                (
+                    (sym("q_r"), sp.Piecewise((halves[0][0], before), (halves[1][0], True))),
+                    (sym("q_rd"), sp.Piecewise((halves[0][1], before), (halves[1][1], True))),
+                    (sym("q_th"), sp.Piecewise((halves[0][2], before), (halves[1][2], True))),
+                    (sym("q_thd"), momentum / (m * sym("q_r") ** 2)),
+                ),
+                comment="the damped solution of the half that holds t; the rate with the momentum at t",
+            ),
+        )
+
+    return MapBuild(steps=steps, state_at=state_at, helpers=(liftoff_kernel(),))
+
+
+#: The family page of this module's map (derive/maps/__init__.py): the page on leg damping.
+PAGE = "damping"
+
+MAPS = (
+    MapSpec(
+        name="geyer-damped",
+        title="Geyer et al.'s map with leg damping (damped radial oscillator per half)",
+        section="3.1",
+        equations=("4", "7", "17", "18", "19", "65", "76"),
+        params=("m", "l0", "k_c", "k_d", "g_s", "c"),
+        build=_build,
+        options=(LIFTOFF, GRAVITY, iterations_option(100, ("convergence-passes",)), tol_option(1e-12)),
+        extras=(
+            Field(
+                "P_c_compression",
+                "virtual gravity effect of the first half (0 unless gravity)",
+                "N m s",
+                odd=True,
+            ),
+            Field("P_c_decompression", "virtual gravity effect of the second half", "N m s", odd=True),
+            Field("passes", "fixed-point passes run (0 unless gravity)", ""),
+        ),
+        summary="Assumption 1 (angular momentum conserved), 1/(1+rho)^3 by its Taylor polynomial: a "
+        "damped linear oscillator per half (k_c, then k_d); liftoff a safeguarded Newton root; "
+        "optionally a gravity correction per half",
+        notes="Not in the report: (4) with the damper -c q_rd, linearised to rho'' + 2 delta rho' + "
+        "omega_n^2 rho = omega^2 - g_s / l0 (delta = c / (2 m), omega_n^2 = k / m + 3 omega^2), solved "
+        "from the touchdown state with k_c and from the bottom with k_d; the bottom in closed form; the "
+        "leg angle (18)-(19) integrated over the damped rho; liftoff where the leg force or q_r - q_r_lo "
+        "reaches 0 (option liftoff), by Newton's method safeguarded by bisection; option gravity adds "
+        "type 3 or 4 of section 4 on each half, as geyer-vs does.",
+    ),
+)
