@@ -13,6 +13,7 @@ import pytest
 from slipmaps.runtime.studies.damping_viability import (
     BIRD,
     FULL,
+    GROUNDS,
     HEIM_DAMPING,
     QUICK,
     cell_measure,
@@ -67,6 +68,16 @@ def test_a_little_damping_enlarges_the_viable_set_on_the_reduced_grid():
     assert 0 < undamped["viable_share"] < damped["viable_share"]
     assert undamped["rounds"] > 10 > damped["rounds"]
     assert damped["kernel_states"] > undamped["kernel_states"] > 0
+    # their figure's measure after one step: on level ground (0 of GROUNDS) the periodic gait returns
+    # to its apex, so S_M there is the measure at the gait's apex (0.233 with damping, measured)
+    level = GROUNDS.index(0.0)
+    for row in (undamped, damped):
+        assert row["post_step"][level] == row["measure_at_gait"]
+    assert damped["post_step"][level] > 0
+    # measured: no ground leaves the undamped bird in the eroded kernel; the damped one keeps
+    # -7 ... +1.5 cm (their largest step up, 2.75 cm, puts its foot underground at the apex)
+    assert undamped["post_step_grounds"] is None
+    assert damped["post_step_grounds"] == [-0.07, 0.015]
 
 
 def test_the_committed_record_is_the_full_grid_and_its_table_is_in_the_docs():

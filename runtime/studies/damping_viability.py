@@ -28,10 +28,11 @@ for a next state beyond the grid: ``outside="edge"``).
 The measure (:func:`measure`): their "viable portion of Q", the viable pairs over all pairs of the
 grid, which is the mean over the grid's states of the share of viable angles (vibly's S_M); beside
 it the kernel's states and the measure at the gait's apex (vibly's ``interp_measure``: the mean of
-S_M over the nodes of the apex's cell); and, as the control for the undamped row, the undamped leg
-on the bird's own energy level (:func:`energy_level`: an energy-conserving step on a (height,
-speed) grid loses its kernel to the conservative rule). ``slipmaps damping-viability`` writes
-damping_viability.json and .png (:func:`write`).
+S_M over the nodes of the apex's cell); their figure's measure, S_M after one step from the gait
+onto each of their ground heights (:func:`post_step`); and, as the control for the undamped row,
+the undamped leg on the bird's own energy level (:func:`energy_level`: an energy-conserving step on
+a (height, speed) grid loses its kernel to the conservative rule). ``slipmaps damping-viability``
+writes damping_viability.json and .png (:func:`write`).
 """
 
 from __future__ import annotations
@@ -52,6 +53,7 @@ from ..api.progress import Bar
 __all__ = [
     "BIRD",
     "HEIM_DAMPING",
+    "GROUNDS",
     "FULL",
     "QUICK",
     "K_D_BOUNDS",
@@ -62,6 +64,7 @@ __all__ = [
     "ratios",
     "nominal_gait",
     "cell_measure",
+    "post_step",
     "energy_level",
     "measure",
     "table",
@@ -85,6 +88,10 @@ BIRD = {
 
 #: Their damping values: ``constant_normalized_damping`` = d / k [s] (0.001, 0.005, 0.01 ... 0.19).
 HEIM_DAMPING = (0.001, 0.005, *(round(0.01 * i, 4) for i in range(1, 20)))
+
+#: Their ground perturbations [m] (generate_new_perturbations.py: ``np.arange(-0.07, 0.03, 0.0025)``,
+#: 40 values): the ground of one step from the gait, negative a step down.
+GROUNDS = tuple(round(-0.07 + 0.0025 * i, 4) for i in range(40))
 
 #: The bounds of k_d in the gait search, as multiples of k_c (the deadbeat step's default is 0.5 ... 2).
 K_D_BOUNDS = (0.5, 50.0)
@@ -194,6 +201,25 @@ def cell_measure(measure: np.ndarray, heights: np.ndarray, speeds: np.ndarray, h
     return float(np.mean(nodes)) if nodes else 0.0
 
 
+def post_step(measure: np.ndarray, heights: np.ndarray, speeds: np.ndarray, p: SlipParams, gait: Gait):
+    """Their figure's measure: S_M (``measure`` over ``heights`` x ``speeds``) at the apex after one
+    step from the gait onto each ground of :data:`GROUNDS` (the exact map, the gait's angle and k_d
+    in ``p``), looked up as their ``compute_measure_postep`` does: at the apex's height above the
+    gait's ground (their state is the body's height in the world, the grid's ground 0), by
+    :func:`cell_measure`; 0 where the step fails."""
+    from slipmaps.generated.status import Status
+
+    from ..api.maps import apex_return_batch
+
+    ground = np.asarray(GROUNDS)
+    res = apex_return_batch(
+        EXACT, p, gait.apex_height, gait.apex_speed, gait.touchdown_angle, ground=ground, progress=False
+    )
+    h, v = res["next_apex_height"] + ground, res["next_apex_speed"]
+    ok = (res["status"] == int(Status.OK)) & (v > 0.0)
+    return [cell_measure(measure, heights, speeds, h[i], v[i]) if ok[i] else 0.0 for i in range(ground.size)]
+
+
 def _row(p: SlipParams, row: dict, heights, speeds, angles) -> dict:
     """One row of :func:`measure`: the gait at damping ``row["c"]`` and its viable set."""
     start = time.perf_counter()
@@ -220,6 +246,13 @@ def _row(p: SlipParams, row: dict, heights, speeds, angles) -> dict:
             "measure_in_kernel": float(vs.measure[vs.kernel].mean()) if vs.kernel.any() else 0.0,
             "measure_at_gait": cell_measure(vs.measure, heights, speeds, gait.apex_height, gait.apex_speed),
             "rounds": int(vs.rounds),
+        }
+        after = post_step(vs.measure, heights, speeds, pc.with_(k_d=gait.k_d), gait)
+        kept = [g for g, m in zip(GROUNDS, after, strict=True) if m > 0]
+        out |= {
+            "post_step": after,
+            "post_step_mean": float(np.mean(after)),
+            "post_step_grounds": [min(kept), max(kept)] if kept else None,
         }
     out["seconds"] = time.perf_counter() - start
     return out
@@ -268,6 +301,7 @@ def measure(grid: Grid = FULL, sweep: list[dict] | None = None, progress: bool |
         "grid": {**asdict(grid), "pairs": int(n_pairs)},
         "k_d_bounds_over_k_c": list(K_D_BOUNDS),
         "outside": "edge",
+        "grounds": list(GROUNDS),
         "rows": rows,
         "undamped_energy_level": energy_level(grid),
     }
@@ -277,20 +311,24 @@ def table(record: dict) -> str:
     """The record as the Markdown table of docs/damping.md (one row per damping value)."""
     head = (
         "| d/k [s] | c [N s/m] | damping ratio | Heim et al.'s axis | periodic apex [m] | touchdown angle "
-        "[deg] | k_d / k_c | viable share | kernel states | measure at the apex | rounds |\n"
-        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
+        "[deg] | k_d / k_c | viable share | kernel states | measure at the apex | rounds | grounds after "
+        "which S_M > 0 [cm] | S_M after a step, mean |\n"
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
     )
     lines = []
     for r in record["rows"]:
         g = r["gait"]
         first = f"| {r['d_over_k']:g} | {r['c']:.3g} | {r['ratio']:.3g} | {r['heim_axis']:.3g} |"
         if not g["found"]:
-            lines.append(f"{first} none | - | - | - | - | - | - |")
+            lines.append(f"{first} none | - | - | - | - | - | - | - | - |")
             continue
         apex = f"{g['apex_height']:.4f}" + (" (the bird's)" if g["at_bird"] else "")
+        kept = r["post_step_grounds"]
+        grounds = "none" if kept is None else f"{100 * kept[0]:.2f} ... {100 * kept[1]:.2f}"
         lines.append(
             f"{first} {apex} | {math.degrees(g['touchdown_angle']):.1f} | {r['k_d_over_k_c']:.3g} | "
-            f"{r['viable_share']:.4f} | {r['kernel_states']:,} | {r['measure_at_gait']:.3f} | {r['rounds']} |"
+            f"{r['viable_share']:.4f} | {r['kernel_states']:,} | {r['measure_at_gait']:.3f} | "
+            f"{r['rounds']} | {grounds} | {r['post_step_mean']:.3f} |"
         )
     return head + "\n".join(lines) + "\n"
 
@@ -307,7 +345,7 @@ def figure(record: dict, path) -> Path:
     rows = [r for r in record["rows"] if r["gait"]["found"]]
     zeta = np.array([r["ratio"] for r in rows])
     bird = np.array([r["gait"]["at_bird"] for r in rows], dtype=bool)
-    fig, (ax, kd) = plt.subplots(1, 2, figsize=(10, 4), constrained_layout=True)
+    fig, (ax, kd, after) = plt.subplots(1, 3, figsize=(15, 4), constrained_layout=True)
     share = np.array([r["viable_share"] for r in rows])
     at_gait = np.array([r["measure_at_gait"] for r in rows])
     ax.plot(zeta, share, "o-", label="viable share of the grid's pairs")
@@ -335,6 +373,20 @@ def figure(record: dict, path) -> Path:
     h = kd.twinx()
     h.plot(zeta, [r["gait"]["apex_height"] for r in rows], "s--", color="C3")
     h.set_ylabel("the gait's apex height [m]", color="C3")
+    grounds = 100 * np.asarray(record["grounds"])
+    mesh = after.pcolormesh(
+        grounds,
+        np.arange(zeta.size),
+        [r["post_step"] for r in rows],
+        shading="nearest",
+        vmin=0,
+        cmap="viridis",
+    )
+    after.set_yticks(np.arange(zeta.size)[::2], [f"{z:.2g}" for z in zeta[::2]])
+    after.set_xlabel("ground of one step from the gait [cm] (negative: down)")
+    after.set_ylabel("damping ratio")
+    after.set_title("S_M at the apex after that step")
+    fig.colorbar(mesh, ax=after)
     save_figure(fig, path)
     return Path(path)
 
