@@ -63,6 +63,7 @@ from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
 from ..api.progress import Stages
 from ..api.validate import leg_angle, non_negative, polar_state, positive
+from . import damping_viability as damping_viability_cli
 from . import footholds as footholds_cli
 from . import report as report_cli
 from . import robot as robot_cli
@@ -280,6 +281,7 @@ def build_parser() -> argparse.ArgumentParser:
     report_cli.add_parser(sub)
     robot_cli.add_parser(sub)
     footholds_cli.add_parser(sub)
+    damping_viability_cli.add_parser(sub)
     viability_cli.add_parser(sub)
     warmup_cli.add_parser(sub)
     return parser
@@ -488,6 +490,7 @@ def _run(argv: list[str] | None) -> int:
         "report": report_cli.run,
         "robot": robot_cli.run,
         "footholds": footholds_cli.run,
+        "damping-viability": damping_viability_cli.run,
         "viability": viability_cli.run,
         "warmup": warmup_cli.run,
     }
