@@ -12,17 +12,20 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+import slipmaps
 from records import assert_close
 from slipmaps.generated import maps_index
+from slipmaps.runtime.api import index
 from slipmaps.runtime.studies import convergence
 from slipmaps.runtime.studies import study as pipeline
-from slipmaps.runtime.studies.accuracy import measure_all, variants
+from slipmaps.runtime.studies.accuracy import DAMPING_RATIOS, measure_all, measure_damping, variants
 from slipmaps.runtime.studies.accuracy_report import (
     SYMMETRIC_RATIO,
     figure_record,
     from_json,
     render_markdown,
     summarize,
+    summarize_damping,
 )
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
@@ -63,8 +66,21 @@ def test_accuracy_figure_record_is_current(runs):
     )
 
 
+def test_accuracy_damping_record_is_current():
+    """docs/accuracy.json's "damping": every map that takes c, at damping ratios 0-0.2 against the
+    exact map with the same c, re-measured; the table is not empty and covers every ratio."""
+    recorded = pipeline.from_json((DOCS / "accuracy.json").read_text())["damping"]
+    damped = [m.name for m in slipmaps.maps() if "c" in m.params and m.name != "exact"]
+    assert damped and {r["map"] for r in recorded["rows"]} == set(damped)
+    assert {r["ratio"] for r in recorded["rows"]} == set(DAMPING_RATIOS) and max(DAMPING_RATIOS) >= 0.2
+    assert all(r["n_compared"] > 0.8 * r["exact_ok"] > 0 for r in recorded["rows"] if r["default"])
+    measured = pipeline.from_json(pipeline.to_json({"damping": summarize_damping(measure_damping())}))
+    assert_close(measured["damping"], recorded, "damping")
+
+
 def test_accuracy_markdown_renders_the_record(record):
-    assert (DOCS / "accuracy.md").read_text() == render_markdown(record)
+    damping = pipeline.from_json((DOCS / "accuracy.json").read_text())["damping"]
+    assert (DOCS / "accuracy.md").read_text() == render_markdown(record, damping=damping)
 
 
 def test_convergence_record_is_current(runs, study):
@@ -73,7 +89,20 @@ def test_convergence_record_is_current(runs, study):
 
 
 def test_convergence_markdown_renders_the_record(study):
-    assert (DOCS / "convergence.md").read_text() == convergence.render_markdown(study)
+    damping = pipeline.from_json((DOCS / "convergence.json").read_text())["damping"]
+    assert (DOCS / "convergence.md").read_text() == convergence.render_markdown(study, damping=damping)
+
+
+def test_convergence_damping_record_is_current():
+    """docs/convergence.json's "damping": the pass counts of the maps that take c at damping ratios
+    0-0.2, re-measured."""
+    recorded = pipeline.from_json((DOCS / "convergence.json").read_text())["damping"]
+    damped = {v.map for v in convergence.variants() if "c" in index.get(v.map).params}
+    assert {r["map"] for r in recorded.get("rows", [])} == damped
+    if damped:
+        assert {r["ratio"] for r in recorded["rows"]} == set(DAMPING_RATIOS)
+    measured = summarize_damping(measure_damping(convergence.variants()))
+    assert_close(pipeline.from_json(pipeline.to_json({"d": measured}))["d"], recorded, "damping")
 
 
 def _passes(study: list[dict], grid_kind: str, name: str) -> list[dict]:

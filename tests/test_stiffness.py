@@ -87,6 +87,7 @@ def test_summary_of_a_tiny_grid_has_every_key_and_finite_values():
 def test_study_covers_every_variable_stiffness_map_and_every_continuity_and_gravity():
     labels = {v.label for v in stiffness.variants()}
     assert labels == {
+        "geyer-damped",
         "geyer-vs",
         "geyer-vs [continuity=report]",
         "geyer-vs [continuity=constrained]",

@@ -535,7 +535,7 @@ MAPS = (
         equations=("4", "7", "17", "18", "19", "65", "76"),
         params=("m", "l0", "k_c", "k_d", "g_s", "c"),
         build=_build,
-        options=(LIFTOFF, GRAVITY, iterations_option(100, ("convergence-passes",)), tol_option(1e-12)),
+        options=(LIFTOFF, GRAVITY, iterations_option(100, ()), tol_option(1e-12)),
         extras=(
             Field(
                 "P_c_compression",

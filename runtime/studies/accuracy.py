@@ -17,6 +17,11 @@ left out as the protocol asks) and map failures where the exact step succeeds.
 The maps and variants measured come from the index: every map, and the values of its options
 that the option roles mark (:func:`variants`); :func:`maps_with` lists the maps of a map role.
 
+With leg damping: :func:`measure_damping` runs the variants of the maps that take the leg damping
+``c`` on the human runner's nonsymmetric grid at the damping ratios :data:`DAMPING_RATIOS`, the
+exact map damped alike (the compiled exact map's batches: ``solve_ivp``'s reference does not take
+``c``).
+
 Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps,
 :func:`exact_steps` the grid's, simulated once per process; :func:`run_batch` with the exact steps
 by the compiled exact map's batches, for large grids; :func:`run_variants` the variants on either),
@@ -27,6 +32,7 @@ records and renders (docs/accuracy.json, .md, .png).
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 import statistics
@@ -63,6 +69,9 @@ __all__ = [
     "run_batch",
     "run_variants",
     "measure_all",
+    "DAMPING_RATIOS",
+    "damped_grid",
+    "measure_damping",
     "apex_errors",
     "compared",
     "map_failures",
@@ -264,6 +273,28 @@ def measure_all(
 ) -> list[GridRun]:
     chosen = variants() if chosen is None else chosen
     return [measure(g, chosen, show_progress) for g in grids]
+
+
+#: The damping ratios c / (2 sqrt(k_c m)) of the damping table (0: the lossless leg, for reference).
+DAMPING_RATIOS = (0.0, 0.02, 0.05, 0.1, 0.2)
+
+
+def damped_grid(grid: Grid, ratio: float) -> Grid:
+    """``grid`` with the leg damping c = ``ratio`` times the critical damping 2 sqrt(k_c m)."""
+    p = grid.params
+    return dataclasses.replace(grid, params=p.with_(c=ratio * 2.0 * math.sqrt(p.k_c * p.m)))
+
+
+def measure_damping(chosen: Sequence[Variant] | None = None, grid: Grid = GRIDS[0]) -> list[GridRun]:
+    """The variants of ``chosen`` (default: :func:`variants`) whose map takes the leg damping c, on
+    ``grid``'s points (the human runner's nonsymmetric grid) at each of :data:`DAMPING_RATIOS`, against
+    the exact map with the same c (:func:`run_batch`). Empty where no map takes c."""
+    chosen = variants() if chosen is None else chosen
+    damped = [v for v in chosen if "c" in index.get(v.map).params]
+    if not damped:
+        return []
+    points = grid.points()
+    return [run_batch(damped_grid(grid, r), points, damped) for r in DAMPING_RATIOS]
 
 
 # ----------------------------------------------------------------------------------------------

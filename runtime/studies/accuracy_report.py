@@ -19,12 +19,16 @@ import numpy as np
 from ..api.paths import save_figure
 from . import study as pipeline
 from .accuracy import (
+    DAMPING_RATIOS,
     GridRun,
     apex_errors,
     baseline,
+    compared,
     exact_failures,
+    map_failures,
     maps_with,
     measure_all,
+    measure_damping,
     variant_stats,
     variants,
 )
@@ -36,6 +40,8 @@ __all__ = [
     "YU_TARGET",
     "AccuracyStudy",
     "summarize",
+    "summarize_damping",
+    "damping_section",
     "figure_record",
     "from_json",
     "findings",
@@ -79,6 +85,44 @@ def summarize(runs: list[GridRun], study: str = "") -> list[dict]:
             }
         )
     return rounded(out)
+
+
+def summarize_damping(runs: list[GridRun]) -> dict:
+    """The damping table's data (:func:`~.accuracy.measure_damping`'s runs, one per damping ratio):
+    per variant and ratio, the points compared, the map's failures and the next-apex error's mean,
+    median and max (6 digits). Empty where no map takes c."""
+    if not runs:
+        return {}
+    p = runs[0].grid.params
+    rows = []
+    for ratio, run in zip(DAMPING_RATIOS, runs, strict=True):
+        for label, (var, _, _) in run.results.items():
+            errors = apex_errors(run, label)
+            finite = errors[np.isfinite(errors)]
+            rows.append(
+                {
+                    "label": label,
+                    "map": var.map,
+                    "default": var.default,
+                    "ratio": ratio,
+                    "c": run.grid.params.c,
+                    "n_compared": int(compared(run, label).sum()),
+                    "exact_ok": int((run.exact_status == 0).sum()),
+                    "failures": dict(sorted(map_failures(run, label).items())),
+                    "mean": float(finite.mean()) if finite.size else math.nan,
+                    "median": float(np.median(finite)) if finite.size else math.nan,
+                    "max": float(finite.max()) if finite.size else math.nan,
+                }
+            )
+    return rounded(
+        {
+            "grid": runs[0].grid.name,
+            "n_points": int(len(runs[0].points)),
+            "critical": 2.0 * math.sqrt(p.k_c * p.m),
+            "ratios": list(DAMPING_RATIOS),
+            "rows": rows,
+        }
+    )
 
 
 def figure_record(runs: list[GridRun]) -> dict:
@@ -269,11 +313,46 @@ at q_th = 0 (found by root-finding), Geyer et al.'s setting; *Yu*: the ICRA 2012
 """
 
 
+def damping_section(damping: dict, what: str = "the maps that take the leg damping c") -> list[str]:
+    """The damping table (:func:`summarize_damping`'s data): each variant of ``what``, mean / max
+    next-apex error per damping ratio."""
+    if not damping:
+        return []
+    labels = list(dict.fromkeys(r["label"] for r in damping["rows"]))
+    ratios = damping["ratios"]
+    cell = {(r["label"], r["ratio"]): r for r in damping["rows"]}
+    lines = [
+        "",
+        "## Leg damping",
+        "",
+        _paragraph(
+            f"{what[0].upper() + what[1:]} (docs/damping.md) on the {damping['grid']} grid "
+            f"({damping['n_points']} points) with c a fraction of the critical damping "
+            f"2 sqrt(k_c m) = {damping['critical']:.4g} N s/m, against the exact map with the same c: "
+            "mean / max of |(dh, dv)| / |(h, v)| of the next apex over the points where both complete "
+            "the step, and the map's failures where the exact step completes."
+        ),
+        "",
+        "| map | " + " | ".join(f"damping ratio {x:g}" for x in ratios) + " |",
+        "| --- |" + " --- |" * len(ratios),
+    ]
+    for label in labels:
+        cells = []
+        for x in ratios:
+            r = cell[(label, x)]
+            failed = sum(r["failures"].values())
+            cells.append(f"{pct(r['mean'])} / {pct(r['max'])}" + (f" ({failed} failed)" if failed else ""))
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def _paragraph(text: str) -> str:
     return " ".join(text.split())
 
 
-def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> str:
+def render_markdown(
+    summary: list[dict], figure_name: str = "accuracy.png", damping: dict | None = None
+) -> str:
     out = [
         "# Accuracy of the maps against the exact stance",
         "",
@@ -332,6 +411,7 @@ def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> s
             "",
             *_quantity_table(g),
         ]
+    out += damping_section(damping or {})
     return "\n".join(out) + "\n"
 
 
@@ -417,11 +497,13 @@ class AccuracyStudy(pipeline.Study):
         self.map_names = map_names
 
     def measure(self, show_progress=None) -> dict:
-        runs = measure_all(variants(self.map_names), show_progress=show_progress)
-        return {"grids": summarize(runs), "figure": figure_record(runs)}
+        chosen = variants(self.map_names)
+        runs = measure_all(chosen, show_progress=show_progress)
+        damping = summarize_damping(measure_damping(chosen))
+        return {"grids": summarize(runs), "figure": figure_record(runs), "damping": damping}
 
     def markdown(self, record: dict, figure_name: str) -> str:
-        return render_markdown(record["grids"], figure_name)
+        return render_markdown(record["grids"], figure_name, record.get("damping"))
 
     def figure(self, record: dict, path: Path) -> Path:
         return figure(record, path)

@@ -6,7 +6,9 @@ option with the role "convergence-series" (the report's mean-value variants) if 
 pass count runs at the map's other defaults with its "tolerance" option at 0 (exactly n passes) on
 the accuracy grids; ``slipmaps accuracy`` writes docs/convergence.json, .md and .png
 (:class:`ConvergenceStudy`, through :mod:`.study`) from the same exact steps as docs/accuracy.md;
-the record is :func:`.accuracy_report.summarize` of the study's variants.
+the record is :func:`.accuracy_report.summarize` of the study's variants. With leg damping: the
+variants of the maps that take c at the damping ratios of :data:`.accuracy.DAMPING_RATIOS`
+(:func:`.accuracy.measure_damping`, the record's ``damping``).
 """
 
 from __future__ import annotations
@@ -19,8 +21,8 @@ import numpy as np
 from ..api import index
 from ..api.paths import save_figure
 from . import study as pipeline
-from .accuracy import Variant, measure_all, options_with
-from .accuracy_report import from_json, summarize
+from .accuracy import Variant, measure_all, measure_damping, options_with
+from .accuracy_report import damping_section, from_json, summarize, summarize_damping
 
 __all__ = [
     "PASSES",
@@ -173,7 +175,9 @@ step of that angle failed.
 """
 
 
-def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -> str:
+def render_markdown(
+    summary: list[dict], figure_name: str = "convergence.png", damping: dict | None = None
+) -> str:
     series = {_series(v["map"], v["options"]): v for g in summary for v in g["variants"]}
     out = [
         "# Convergence of the iterative maps with the number of passes",
@@ -200,6 +204,7 @@ def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -
             "",
             *_findings(summary, name),
         ]
+    out += damping_section(damping or {}, "the pass counts of the maps that take the leg damping c")
     return "\n".join(out) + "\n"
 
 
@@ -251,11 +256,12 @@ class ConvergenceStudy(pipeline.Study):
         return bool(study_maps(self.map_names))
 
     def measure(self, show_progress=None) -> dict:
-        runs = measure_all(variants(self.map_names), show_progress=show_progress)
-        return {"grids": summarize(runs, STUDY)}
+        chosen = variants(self.map_names)
+        runs = measure_all(chosen, show_progress=show_progress)
+        return {"grids": summarize(runs, STUDY), "damping": summarize_damping(measure_damping(chosen))}
 
     def markdown(self, record: dict, figure_name: str) -> str:
-        return render_markdown(record["grids"], figure_name)
+        return render_markdown(record["grids"], figure_name, record.get("damping"))
 
     def figure(self, record: dict, path: Path) -> Path:
         return figure(record["grids"], path)
