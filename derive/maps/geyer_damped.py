@@ -46,7 +46,7 @@ from .geyer_damped_helpers import (
     damped_radial_equation,
     damped_radial_solution,
 )
-from .gravity import MOMENTUM_SCALE, half_impulses, iterations_option, tol_option
+from .gravity import half_fixed_point, half_impulse_switch, iterations_option, tol_option
 
 __all__ = [
     "MAPS",
@@ -399,48 +399,22 @@ def _pass(n: _Names, P1: sp.Basic, P2: sp.Basic) -> tuple[Step, ...]:
 
 def _impulses(inp: MapInputs, n: _Names) -> Switch:
     """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse (type 3 or 4 of section 4
-    on [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``."""
-    angles = (q_th_td, n("bottom_q_th"), n("liftoff_q_th"))
-    t_b, t_s = n("t_bottom"), n("t_stance")
-    true_lengths = (q_r_td, n("bottom_q_r"), n("bottom_q_r"), n("liftoff_q_r"))
-    P1, P2 = n("P_new1"), n("P_new2")
+    on [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``, type 4 with the average leg
+    length of each half's damped rho(t) (:func:`average_offset`)."""
     c_, d_ = n.prefix + "c_", n.prefix + "d_"
-    at_b = {_COS: n("cos_b"), _SIN: n("sin_b"), _EXP: n("exp_b"), t: t_b}
+    at_b = {_COS: n("cos_b"), _SIN: n("sin_b"), _EXP: n("exp_b"), t: n("t_bottom")}
     at_lo = {_COS: n("cos_t"), _SIN: n("sin_t"), _EXP: n("exp_t"), t: n("tau")}
-    average = (
-        l0 * (1 + _names(c_)[a] + _bind(average_offset(), c_, at_b)),
-        l0 * (1 + _names(d_)[a] + _bind(average_offset(), d_, at_lo)),
-    )
-    L1, L2 = sym(f"_{n.prefix}L1"), sym(f"_{n.prefix}L2")  # private to their branch
-    choice = GRAVITY
-    return Switch(
-        GRAVITY.symbol,
+    return half_impulse_switch(
+        inp,
+        n.prefix,
+        (n("t_bottom"), n("t_stance")),
+        (q_th_td, n("bottom_q_th"), n("liftoff_q_th")),
+        (q_r_td, n("bottom_q_r"), n("bottom_q_r"), n("liftoff_q_r")),
         (
-            (choice.code("none"), (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),)),
-            (
-                choice.code("type3"),
-                (
-                    Stage(
-                        tuple(zip((P1, P2), half_impulses(t_b, t_s, angles, true_lengths), strict=True)),
-                        comment="eq (65) on each half",
-                    ),
-                ),
-            ),
-            (
-                choice.code("type4"),
-                (
-                    Stage(
-                        (
-                            (L1, average[0]),
-                            (L2, average[1]),
-                            *zip((P1, P2), half_impulses(t_b, t_s, angles, (L1, L1, L2, L2)), strict=True),
-                        ),
-                        comment="eq (76) on each half, the average leg length of the damped rho(t) on it",
-                    ),
-                ),
-            ),
+            l0 * (1 + _names(c_)[a] + _bind(average_offset(), c_, at_b)),
+            l0 * (1 + _names(d_)[a] + _bind(average_offset(), d_, at_lo)),
         ),
-        comment="the virtual gravity effect of each half",
+        "the damped rho(t)",
     )
 
 
@@ -455,24 +429,7 @@ def _steps(inp: MapInputs) -> tuple[Step, ...]:
             (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "stance starts compressing"),),
             comment="the touchdown angular momentum; delta = c / (2 m)",
         ),
-        Iterate(
-            state=((_P1, sp.S.Zero), (_P2, sp.S.Zero)),
-            # one pass at every iterate, the final one included (visible after the loop)
-            evaluate=_pass(_TRIAL, _P1, _P2),
-            body=(_impulses(inp, _TRIAL),),
-            update=(_TRIAL("P_new1"), _TRIAL("P_new2")),
-            max_iter=sp.Piecewise((0, GRAVITY.is_("none")), (inp.opt("iterations"), True)),
-            tol=inp.opt("tol"),
-            scales=(MOMENTUM_SCALE, MOMENTUM_SCALE),
-            count=sym("passes"),
-            fail_status="NOT_CONVERGED",
-            comment="fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)",
-            per_direction=False,
-        ),
-        Stage(
-            tuple((sym(f.name), _TRIAL(f.name)) for f in catalog.STANCE.fields()),
-            comment="the stance outputs: the pass at the final iterate",
-        ),
+        *half_fixed_point(inp, _TRIAL.prefix, _pass(_TRIAL, _P1, _P2), _impulses(inp, _TRIAL)),
     )
 
 

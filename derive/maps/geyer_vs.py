@@ -68,12 +68,12 @@ from ..symbols import (
 from . import geyer
 from .gravity import (
     E_SYM,
-    MOMENTUM_SCALE,
     P_SYM,
     T_F,
     T_I,
     average_leg_length,
-    half_impulses,
+    half_fixed_point,
+    half_impulse_switch,
     iterations_option,
     liftoff_radial_speed,
     tol_option,
@@ -428,10 +428,6 @@ def _liftoff(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Stage, ...]:
 def _impulses(inp: MapInputs, n: _Names) -> Switch:
     """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse (type 3 or 4 of section 4
     on [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``."""
-    angles = (q_th_td, n("bottom_q_th"), n("liftoff_q_th"))
-    t_b, t_s = n("t_bottom"), n("t_stance")
-    true_lengths = (q_r_td, n("bottom_q_r"), n("bottom_q_r"), q_r_lo)
-    P1, P2 = n("P_new1"), n("P_new2")
     average = average_leg_length("eq11")  # (11) on its own time axis
 
     def over(half, t_from, t_to):
@@ -439,42 +435,14 @@ def _impulses(inp: MapInputs, n: _Names) -> Switch:
         times = {T_I: t_from / w, T_F: t_to / w}
         return average.subs(times).subs({a: half("a"), b: half("b"), omega0_hat: w})
 
-    L1, L2 = sym(f"_{n.prefix}L1"), sym(f"_{n.prefix}L2")  # private to their branch
-    choice = inp.options["gravity"]
-    return Switch(
-        inp.opt("gravity"),
-        (
-            (choice.code("none"), (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),)),
-            (
-                choice.code("type3"),
-                (
-                    Stage(
-                        (
-                            *zip(
-                                (P1, P2),
-                                half_impulses(t_b, t_s, angles, true_lengths),
-                                strict=True,
-                            ),
-                        ),
-                        comment="eq (65) on each half",
-                    ),
-                ),
-            ),
-            (
-                choice.code("type4"),
-                (
-                    Stage(
-                        (
-                            (L1, over(n.ab, n.ab("phase_td"), BOTTOM_PHASE)),
-                            (L2, over(n.ba, BOTTOM_PHASE, n.ba("phase_lo"))),
-                            *zip((P1, P2), half_impulses(t_b, t_s, angles, (L1, L1, L2, L2)), strict=True),
-                        ),
-                        comment="eq (76) on each half, the average leg length of (11) on it",
-                    ),
-                ),
-            ),
-        ),
-        comment="the virtual gravity effect of each half",
+    return half_impulse_switch(
+        inp,
+        n.prefix,
+        (n("t_bottom"), n("t_stance")),
+        (q_th_td, n("bottom_q_th"), n("liftoff_q_th")),
+        (q_r_td, n("bottom_q_r"), n("bottom_q_r"), q_r_lo),
+        (over(n.ab, n.ab("phase_td"), BOTTOM_PHASE), over(n.ba, BOTTOM_PHASE, n.ba("phase_lo"))),
+        "(11)",
     )
 
 
@@ -485,28 +453,9 @@ def _pass(inp: MapInputs, n: _Names, P1: sp.Basic, P2: sp.Basic) -> tuple[Step, 
 def _build(inp: MapInputs) -> MapBuild:
     P1, P2 = sym("P_c_compression"), sym("P_c_decompression")
     trial = _Names("i_")
-    gravity = inp.options["gravity"]
     steps = (
         touchdown_invariants(k_c),
-        Iterate(
-            state=((P1, sp.S.Zero), (P2, sp.S.Zero)),
-            # one pass at every iterate, the final one included (visible after the loop)
-            evaluate=_pass(inp, trial, P1, P2),
-            body=(_impulses(inp, trial),),
-            update=(trial("P_new1"), trial("P_new2")),
-            max_iter=sp.Piecewise((0, gravity.is_("none")), (inp.opt("iterations"), True)),
-            tol=inp.opt("tol"),
-            scales=(MOMENTUM_SCALE, MOMENTUM_SCALE),
-            count=sym("passes"),
-            fail_status="NOT_CONVERGED",
-            comment="fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)",
-            # no pass by default: the direction array would cost the Jacobian 7-12 % (measured)
-            per_direction=False,
-        ),
-        Stage(
-            tuple((sym(f.name), trial(f.name)) for f in catalog.STANCE.fields()),
-            comment="the stance outputs: the pass at the final iterate",
-        ),
+        *half_fixed_point(inp, trial.prefix, _pass(inp, trial, P1, P2), _impulses(inp, trial)),
     )
 
     def state_at(time: sp.Symbol) -> tuple[Step, ...]:

@@ -93,6 +93,78 @@ def half_impulses(t_b, t_s, angles, lengths) -> tuple[sp.Basic, sp.Basic]:
     return impulse(t_b, [(r_td, th_td), (r_b1, th_b)]), impulse(t_s - t_b, [(r_b2, th_b), (r_lo, th_lo)])
 
 
+def half_impulse_switch(
+    inp: MapInputs, prefix: str, times: tuple, angles: tuple, lengths: tuple, averages: tuple, source: str
+) -> Switch:
+    """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse by option ``gravity``
+    (``none``, ``type3``, ``type4``) of a map split at the bottom (``geyer-vs``, ``geyer-damped``):
+    type 3, (65) on [t_td, t_b] and [t_b, t_lo] with the true leg lengths ``lengths`` (q_r_td,
+    q_r_b, q_r_b, q_r_lo); type 4, (76) with each half's average leg length ``averages`` (two
+    expressions of the stance solution ``source``). ``times``: (t_b, t_s); ``angles``: (q_th_td,
+    q_th_b, q_th_lo)."""
+    (t_b, t_s), choice = times, inp.options["gravity"]
+    P1, P2 = sym(f"{prefix}P_new1"), sym(f"{prefix}P_new2")
+    L1, L2 = sym(f"_{prefix}L1"), sym(f"_{prefix}L2")  # private to their branch
+    return Switch(
+        inp.opt("gravity"),
+        (
+            (choice.code("none"), (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),)),
+            (
+                choice.code("type3"),
+                (
+                    Stage(
+                        tuple(zip((P1, P2), half_impulses(t_b, t_s, angles, lengths), strict=True)),
+                        comment="eq (65) on each half",
+                    ),
+                ),
+            ),
+            (
+                choice.code("type4"),
+                (
+                    Stage(
+                        (
+                            (L1, averages[0]),
+                            (L2, averages[1]),
+                            *zip((P1, P2), half_impulses(t_b, t_s, angles, (L1, L1, L2, L2)), strict=True),
+                        ),
+                        comment=f"eq (76) on each half, the average leg length of {source} on it",
+                    ),
+                ),
+            ),
+        ),
+        comment="the virtual gravity effect of each half",
+    )
+
+
+def half_fixed_point(inp: MapInputs, prefix: str, evaluate: tuple, body: Switch) -> tuple[Step, ...]:
+    """The fixed point of the two halves' virtual gravity effects ``P_c_compression``,
+    ``P_c_decompression`` from 0 (option ``gravity`` none: no pass), ``evaluate`` the pass named by
+    ``prefix`` at every iterate, ``body`` its impulses (:func:`half_impulse_switch`); then the stance
+    outputs from the pass at the final iterate."""
+    P1, P2 = sym("P_c_compression"), sym("P_c_decompression")
+    return (
+        Iterate(
+            state=((P1, sp.S.Zero), (P2, sp.S.Zero)),
+            # one pass at every iterate, the final one included (visible after the loop)
+            evaluate=evaluate,
+            body=(body,),
+            update=(sym(f"{prefix}P_new1"), sym(f"{prefix}P_new2")),
+            max_iter=sp.Piecewise((0, inp.options["gravity"].is_("none")), (inp.opt("iterations"), True)),
+            tol=inp.opt("tol"),
+            scales=(MOMENTUM_SCALE, MOMENTUM_SCALE),
+            count=sym("passes"),
+            fail_status="NOT_CONVERGED",
+            comment="fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)",
+            # no pass by default: the direction array would cost the Jacobian 7-12 % (measured)
+            per_direction=False,
+        ),
+        Stage(
+            tuple((sym(f.name), sym(prefix + f.name)) for f in catalog.STANCE.fields()),
+            comment="the stance outputs: the pass at the final iterate",
+        ),
+    )
+
+
 @cache
 def stance_radius(source: str) -> sp.Basic:
     """q_r(t) of the stance from which an average leg length is taken.
