@@ -46,7 +46,7 @@ from .geyer_damped_helpers import (
     damped_radial_equation,
     damped_radial_solution,
 )
-from .gravity import half_fixed_point, half_impulse_switch, iterations_option, tol_option
+from .gravity import HALF_EXTRAS, half_fixed_point, half_impulse_switch, iterations_option, tol_option
 
 __all__ = [
     "MAPS",
@@ -493,16 +493,7 @@ MAPS = (
         params=("m", "l0", "k_c", "k_d", "g_s", "c"),
         build=_build,
         options=(LIFTOFF, GRAVITY, iterations_option(100, ()), tol_option(1e-12)),
-        extras=(
-            Field(
-                "P_c_compression",
-                "virtual gravity effect of the first half (0 unless gravity)",
-                "N m s",
-                odd=True,
-            ),
-            Field("P_c_decompression", "virtual gravity effect of the second half", "N m s", odd=True),
-            Field("passes", "fixed-point passes run (0 unless gravity)", ""),
-        ),
+        extras=HALF_EXTRAS,
         summary="Assumption 1 (angular momentum conserved), 1/(1+rho)^3 by its Taylor polynomial: a "
         "damped linear oscillator per half (k_c, then k_d); liftoff a safeguarded Newton root; "
         "optionally a gravity correction per half",

@@ -68,6 +68,7 @@ from ..symbols import (
 from . import geyer
 from .gravity import (
     E_SYM,
+    HALF_EXTRAS,
     P_SYM,
     T_F,
     T_I,
@@ -508,16 +509,7 @@ MAPS = (
         # the passes matter only with a gravity correction, off by default: the accuracy study
         # measures the correction through GRAVITY's values, at the default pass count
         options=(CONTINUITY, GRAVITY, iterations_option(100, ("convergence-passes",)), tol_option(1e-12)),
-        extras=(
-            Field(
-                "P_c_compression",
-                "virtual gravity effect of the first half (0 unless gravity)",
-                "N m s",
-                odd=True,
-            ),
-            Field("P_c_decompression", "virtual gravity effect of the second half", "N m s", odd=True),
-            Field("passes", "fixed-point passes run (0 unless gravity)", ""),
-        ),
+        extras=HALF_EXTRAS,
         summary="Geyer et al.'s map with k_c to the bottom, the energy jump (97)-(98), again with k_d to "
         "liftoff; optionally a gravity correction per half",
         notes="Section 5.1: apex to bottom (78)-(89) with k_c, bottom to apex (90)-(105) with k_d and "

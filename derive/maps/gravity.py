@@ -136,6 +136,17 @@ def half_impulse_switch(
     )
 
 
+#: The extra outputs of a map with :func:`half_fixed_point`: each half's virtual gravity effect and
+#: the passes run.
+HALF_EXTRAS = (
+    Field(
+        "P_c_compression", "virtual gravity effect of the first half (0 unless gravity)", "N m s", odd=True
+    ),
+    Field("P_c_decompression", "virtual gravity effect of the second half", "N m s", odd=True),
+    Field("passes", "fixed-point passes run (0 unless gravity)", ""),
+)
+
+
 def half_fixed_point(inp: MapInputs, prefix: str, evaluate: tuple, body: Switch) -> tuple[Step, ...]:
     """The fixed point of the two halves' virtual gravity effects ``P_c_compression``,
     ``P_c_decompression`` from 0 (option ``gravity`` none: no pass), ``evaluate`` the pass named by
