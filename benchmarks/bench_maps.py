@@ -20,13 +20,16 @@ Measured side by side, for the human runner (``slipmaps.HUMAN_RUNNER``):
 (f) the first call of every map's apex-return Jacobian (``slipmaps.apex_return_jacobian``) in a
     fresh process with an empty ``NUMBA_CACHE_DIR``: the seconds a new user waits while numba
     compiles the Jacobian kernel and everything it calls (target: at most 10 s for the slowest, issue 29);
-(g) the generated Jacobian modules' sizes (lines, longest line).
+(g) the generated Jacobian modules' sizes (lines, longest line);
+(h) the map ``iterative`` with the leg damping c (10 % and 20 % of the critical damping
+    2 sqrt(k_c m), both liftoff conventions) against the lossless leg (c = 0), ``stance_batch`` per
+    state on one thread, interleaved runs (target: a damped stance at most 1.3x the lossless one).
 
 States: apex heights 1.0-1.1 m, speeds 3-7 m/s, touchdown angles 0.30-0.50 rad (uniform, seed 0);
 the stance states are their touchdowns. Ratios are measured in one run; absolute times move with the
 machine and its load (printed). Usage::
 
-    python benchmarks/bench_maps.py [--n N] [--repeat R] [--sections abcdefg] [--json]
+    python benchmarks/bench_maps.py [--n N] [--repeat R] [--sections abcdefgh] [--json]
 """
 
 from __future__ import annotations
@@ -56,6 +59,8 @@ TARGET_RATIO = 1.4
 #: Targets of the Jacobians (issue 17, item 6): cost in apex-return calls, first-call compile seconds.
 TARGET_JACOBIAN_RATIO = 3.0
 TARGET_FIRST_CALL_S = 10.0
+#: (h): the damped iterative stance's cost target, in lossless stances.
+TARGET_DAMPED_RATIO = 1.3
 GENERATED = Path(slipmaps.__file__).resolve().parent.parent.parent / "generated"
 
 #: (f): one first call, timed in a fresh interpreter (its own empty numba cache).
@@ -141,9 +146,11 @@ def module_sizes() -> list[dict]:
     return rows
 
 
-def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
+def run(n: int, repeat: int, sections: str = "abcdefgh") -> dict:
     h, v, th, td = states(n)
     out: dict = {"machine": machine(), "n": n, "repeat": repeat}
+    if "h" in sections:
+        out["damped_iterative"] = damped_iterative(td, repeat)
     if "g" in sections:
         out["sizes"] = module_sizes()
         out["generated_lines"] = sum(len(p.read_text().splitlines()) for p in GENERATED.glob("*.py"))
@@ -223,6 +230,38 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
             t = best_of(lambda name=name, opts=opts: slipmaps.stance_batch(name, P, td, **opts), repeat)
             out["passes"].append({"map": name, "n": k, "stance_ns": 1e9 * t / len(td)})
     return out
+
+
+def damped_iterative(td: np.ndarray, repeat: int) -> list[dict]:
+    """(h): ``iterative``'s stance with the leg damping against the lossless one (module docstring):
+    one thread, the cases interleaved in every run (the load moves them alike), best of ``repeat``."""
+    critical = 2.0 * math.sqrt(P.k_c * P.m)
+    cases = {
+        "lossless": (P, {}),
+        "10 % force": (P.with_(c=0.1 * critical), {}),
+        "10 % length": (P.with_(c=0.1 * critical), {"liftoff": "length"}),
+        "20 % force": (P.with_(c=0.2 * critical), {}),
+    }
+    for params, options in cases.values():
+        slipmaps.stance_batch("iterative", params, td[:1000], **options)  # warm-up
+    best = dict.fromkeys(cases, math.inf)
+
+    def once(params, options) -> float:
+        t0 = time.perf_counter()
+        slipmaps.stance_batch("iterative", params, td, **options)
+        return time.perf_counter() - t0
+
+    for _ in range(repeat):
+        for name, (params, options) in cases.items():
+            best[name] = min(best[name], with_threads(1, lambda p=params, o=options: once(p, o)))
+    ok = {
+        name: float(slipmaps.stance_batch("iterative", p, td[:20_000], **o).ok.mean())
+        for name, (p, o) in cases.items()
+    }
+    return [
+        {"case": name, "stance_ns": 1e9 * t / len(td), "ratio": t / best["lossless"], "ok_fraction": ok[name]}
+        for name, t in best.items()
+    ]
 
 
 @numba.njit
@@ -306,6 +345,19 @@ def report(r: dict) -> str:
     if "yardstick" in r:
         lines += _report_maps(r)
     lines += _report_jacobians(r)
+    if r.get("damped_iterative"):
+        worst = max(row["ratio"] for row in r["damped_iterative"])
+        lines += [
+            "",
+            "(h) iterative with the leg damping (fraction of the critical damping, liftoff), stance_batch",
+            f"    on one thread, ns per state and in lossless stances (target <= {TARGET_DAMPED_RATIO:g}x: "
+            f"{'met' if worst <= TARGET_DAMPED_RATIO else 'NOT met'}):",
+        ]
+        for row in r["damped_iterative"]:
+            lines.append(
+                f"    {row['case']:<14}{row['stance_ns']:>8.0f} ns{row['ratio']:>7.2f}x"
+                f"   ok {row['ok_fraction']:.2f}"
+            )
     return "\n".join(lines)
 
 
@@ -389,7 +441,7 @@ def main() -> int:
     parser.add_argument("--n", type=int, default=1_000_000, help="states per batch (default %(default)s)")
     parser.add_argument("--repeat", type=int, default=5, help="timed runs, best kept (default %(default)s)")
     parser.add_argument(
-        "--sections", default="abcdefg", help="sections to run, e.g. efg (default %(default)s)"
+        "--sections", default="abcdefgh", help="sections to run, e.g. efg (default %(default)s)"
     )
     parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
     args = parser.parse_args()

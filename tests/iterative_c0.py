@@ -58,10 +58,11 @@ def outputs(**extra) -> list[dict]:
                 "apex": _batch(slipmaps.apex_return_batch("iterative", p, *APEXES, **o)),
             }
             if j < JACOBIAN_OPTIONS:
+                two = [a[:2] for a in APEXES]
                 for role, jac in (
                     ("stance_jacobian", slipmaps.stance_jacobian_batch("iterative", p, TOUCHDOWNS[:2], **o)),
-                    ("apex_jacobian", slipmaps.apex_return_jacobian_batch("iterative", p, *(a[:2] for a in APEXES), **o)),
-                ):  # fmt: skip
+                    ("apex_jacobian", slipmaps.apex_return_jacobian_batch("iterative", p, *two, **o)),
+                ):
                     keep = [i for i, w in enumerate(jac.inputs) if w != "c"]
                     case[role] = {
                         "inputs": [jac.inputs[i] for i in keep],
