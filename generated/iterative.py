@@ -192,7 +192,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, g
         passes: Picard passes run [1]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 65
+    # Total ops: 59
     # inputs: finite and inside their domains
     if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, guess_q_th, guess_q_thd, nodes,
             iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0))
@@ -201,8 +201,8 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, g
             & ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    (Q0, P0, Psr0, Q, P, Psr, sigma, Fc, sinQ, F, Fd, ft, fq, fp, Psi, G, Q_next, P_next, Shape,
-        ) = (node_arrays(stack(228), 19, 12))
+    (Q0, P0, Psr0, Q, P, Psr, sigma, F, sinQ, ft, fq, fp, Psi, G, Q_next, P_next, Shape,
+        ) = (node_arrays(stack(204), 17, 12))
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
@@ -229,12 +229,12 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, g
             break
         Psr0[_j1002] = 1.0
     # Picard passes on the node values (collocation in u)
-    for _j1020 in range(6):
-        if _j1020 >= nq:
+    for _j1018 in range(6):
+        if _j1018 >= nq:
             break
-        Q[_j1020] = Q0[_j1020]
-        P[_j1020] = P0[_j1020]
-        Psr[_j1020] = Psr0[_j1020]
+        Q[_j1018] = Q0[_j1018]
+        P[_j1018] = P0[_j1018]
+        Psr[_j1018] = Psr0[_j1018]
     _D = -guess_q_r + q_r
     _passes = 0.0
     _conv0 = False
@@ -244,44 +244,35 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, g
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
-        # node values of the pass: sigma, F_r (29), sin Q
+        # node values of the pass: sigma, F_r (29) and the damper's force, sin Q
         for _j1004 in range(6):
             if _j1004 >= nq:
                 break
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
+            _Psr = Psr[_j1004]
             _x0 = _D*_u**2 - _D + q_r
             _sigma = _x0
             _F = _Pj**2/(_x0**3*m) - _x0*k_c - g_s*m*math.cos(_Qj) + k_c*l0
             _sinQ = math.sin(_Qj)
             sigma[_j1004] = _sigma
-            Fc[_j1004] = _F
+            F[_j1004] = _F - math.sqrt(_Psr)*_u*c*q_rd
             sinQ[_j1004] = _sinQ
-        # F_r with the damper's force at the previous pass's Psi (0 at c = 0)
+        # Psi and the u-rates of (30)-(32) at the nodes
         for _j1006 in range(6):
             if _j1006 >= nq:
                 break
-            _Fc = Fc[_j1006]
+            _Qj = Q[_j1006]
+            _Pj = P[_j1006]
             _u = u[_j1006]
-            _Psr = Psr[_j1006]
-            _Fd = -math.sqrt(_Psr)*_u*c*q_rd
-            F[_j1006] = _Fc + _Fd
-            Fd[_j1006] = _Fd
-        # Psi and the u-rates of (30)-(32) at the nodes
-        for _j1008 in range(6):
-            if _j1008 >= nq:
-                break
-            _Qj = Q[_j1008]
-            _Pj = P[_j1008]
-            _u = u[_j1008]
-            _sigma = sigma[_j1008]
-            _sinQ = sinQ[_j1008]
+            _sigma = sigma[_j1006]
+            _sinQ = sinQ[_j1006]
             _S1F = 0.0
-            for _j1009 in range(6):
-                if _j1009 >= nq:
+            for _j1007 in range(6):
+                if _j1007 >= nq:
                     break
-                _S1F += S1[_j1008, _j1009]*F[_j1009]
+                _S1F += S1[_j1006, _j1007]*F[_j1007]
             _x1 = _S1F/_u**2
             _x2 = math.sqrt(m)
             _x3 = math.sqrt(_D)/math.sqrt(_x1)
@@ -292,80 +283,80 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, g
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
-            ft[_j1008] = _ft
-            fq[_j1008] = _fq
-            fp[_j1008] = _fp
-            Psi[_j1008] = _Psi
+            ft[_j1006] = _ft
+            fq[_j1006] = _fq
+            fp[_j1006] = _fp
+            Psi[_j1006] = _Psi
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
         _wfp = 0.0
+        for _j1008 in range(6):
+            if _j1008 >= nq:
+                break
+            _wfq += w[_j1008]*fq[_j1008]
+            _wfp += w[_j1008]*fp[_j1008]
+        # F_r minus its spring term
         for _j1010 in range(6):
             if _j1010 >= nq:
                 break
-            _wfq += w[_j1010]*fq[_j1010]
-            _wfp += w[_j1010]*fp[_j1010]
-        # F_r minus its spring term
+            _F = F[_j1010]
+            _sigma = sigma[_j1010]
+            G[_j1010] = _F - k_c*(-_sigma + l0)
+        _rbar = 0.0
+        _Wpass = 0.0
         for _j1012 in range(6):
             if _j1012 >= nq:
                 break
-            _F = F[_j1012]
-            _sigma = sigma[_j1012]
-            G[_j1012] = _F - k_c*(-_sigma + l0)
-        _rbar = 0.0
-        _Wpass = 0.0
+            _rbar += w1[_j1012]*G[_j1012]
+            _Wpass += w1[_j1012]*F[_j1012]
+        # the next iterate at the nodes
         for _j1014 in range(6):
             if _j1014 >= nq:
                 break
-            _rbar += w1[_j1014]*G[_j1014]
-            _Wpass += w1[_j1014]*F[_j1014]
-        # the next iterate at the nodes
-        for _j1016 in range(6):
-            if _j1016 >= nq:
-                break
             _Sfq = 0.0
             _Sfp = 0.0
-            for _j1017 in range(6):
-                if _j1017 >= nq:
+            for _j1015 in range(6):
+                if _j1015 >= nq:
                     break
-                _Sfq += S[_j1016, _j1017]*fq[_j1017]
-                _Sfp += S[_j1016, _j1017]*fp[_j1017]
-            Q_next[_j1016] = -_Sfq + _wfq + q_th
-            P_next[_j1016] = -_Sfp + _wfp + m*q_r**2*q_thd
+                _Sfq += S[_j1014, _j1015]*fq[_j1015]
+                _Sfp += S[_j1014, _j1015]*fp[_j1015]
+            Q_next[_j1014] = -_Sfq + _wfq + q_th
+            P_next[_j1014] = -_Sfp + _wfp + m*q_r**2*q_thd
         # D = q_r_td - q_r_b from the radial work
         _x4 = m*q_rd**2
         _x5 = 2.0*_rbar + k_c*(l0 - q_r)
         _D_next = _x4/(_x5 + math.sqrt(_x4*k_c + _x5**2))
         # the shape Psi/W
-        for _j1018 in range(6):
-            if _j1018 >= nq:
+        for _j1016 in range(6):
+            if _j1016 >= nq:
                 break
-            _Psi = Psi[_j1018]
-            Shape[_j1018] = _Psi/_Wpass
+            _Psi = Psi[_j1016]
+            Shape[_j1016] = _Psi/_Wpass
         _n0_0 = _D_next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0))
-        for _j1020 in range(6):
-            if _j1020 >= nq:
+        for _j1018 in range(6):
+            if _j1018 >= nq:
                 break
-            _conv0 = _conv0 and abs(Q_next[_j1020] - Q[_j1020]) <= tol*(1.0)
-            Q[_j1020] = Q_next[_j1020]
-            _conv0 = (_conv0 and abs(P_next[_j1020] - P[_j1020]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            _conv0 = _conv0 and abs(Q_next[_j1018] - Q[_j1018]) <= tol*(1.0)
+            Q[_j1018] = Q_next[_j1018]
+            _conv0 = (_conv0 and abs(P_next[_j1018] - P[_j1018]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
-            P[_j1020] = P_next[_j1020]
-            Psr[_j1020] = Shape[_j1020]
+            P[_j1018] = P_next[_j1018]
+            Psr[_j1018] = Shape[_j1018]
         _D = _n0_0
         _passes += 1.0
     _t_end = 0.0
     _q_end = 0.0
     _p_end = 0.0
-    for _j1021 in range(6):
-        if _j1021 >= nq:
+    for _j1019 in range(6):
+        if _j1019 >= nq:
             break
-        _t_end += w[_j1021]*ft[_j1021]
-        _q_end += w[_j1021]*fq[_j1021]
-        _p_end += w[_j1021]*fp[_j1021]
+        _t_end += w[_j1019]*ft[_j1019]
+        _q_end += w[_j1019]*fq[_j1019]
+        _p_end += w[_j1019]*fp[_j1019]
     # bottom state
     _x6 = -_D + q_r
     t_half = _t_end
@@ -420,7 +411,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, gu
         passes: Picard passes run [1]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 111
+    # Total ops: 100
     # inputs: finite and inside their domains
     if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, guess_q_th, guess_q_thd, nodes,
             iterations, tol, liftoff,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
@@ -430,8 +421,8 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, gu
             == 0.0) or (liftoff == 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    (Q0, P0, Psr0, Q, P, Psr, sigma, Fc, sinQ, F, Fd, ft, fq, fp, Psi, Q_next, P_next,
-        ) = (node_arrays(stack(204), 17, 12))
+    (Q0, P0, Psr0, Q, P, Psr, sigma, F, sinQ, ft, fq, fp, Psi, Q_next, P_next,) = (node_arrays(stack(180), 15,
+        12))
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)
@@ -461,17 +452,13 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, gu
             break
         Psr0[_j1002] = -0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2
     # Picard passes on the node values (collocation in u)
-    for _j1015 in range(6):
-        if _j1015 >= nq:
+    for _j1013 in range(6):
+        if _j1013 >= nq:
             break
-        Q[_j1015] = Q0[_j1015]
-        P[_j1015] = P0[_j1015]
-        Psr[_j1015] = Psr0[_j1015]
-    _D = (((2.0*k_d*l0 - 2.0*k_d*q_r)**2/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**2) if (liftoff
-        == 0.0) and (2.0*c*math.sqrt(-q_r + q_r_lo)*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) - k_d*(l0 - q_r_lo) > 0.0) else (-q_r + q_r_lo))
+        Q[_j1013] = Q0[_j1013]
+        P[_j1013] = P0[_j1013]
+        Psr[_j1013] = Psr0[_j1013]
+    _D = -q_r + q_r_lo
     _passes = 0.0
     _conv0 = False
     # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
@@ -480,44 +467,35 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, gu
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
-        # node values of the pass: sigma, F_r (29), sin Q
+        # node values of the pass: sigma, F_r (29) and the damper's force, sin Q
         for _j1004 in range(6):
             if _j1004 >= nq:
                 break
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
+            _Psr = Psr[_j1004]
             _x0 = _D*_u**2 + q_r
             _sigma = _x0
             _F = _Pj**2/(_x0**3*m) - _x0*k_d - g_s*m*math.cos(_Qj) + k_d*l0
             _sinQ = math.sin(_Qj)
             sigma[_j1004] = _sigma
-            Fc[_j1004] = _F
+            F[_j1004] = _F - 2.0*_u*c*math.sqrt(_D*_Psr)/math.sqrt(m)
             sinQ[_j1004] = _sinQ
-        # F_r with the damper's force at the previous pass's Psi (0 at c = 0)
+        # Psi and the u-rates of (30)-(32) at the nodes
         for _j1006 in range(6):
             if _j1006 >= nq:
                 break
-            _Fc = Fc[_j1006]
+            _Qj = Q[_j1006]
+            _Pj = P[_j1006]
             _u = u[_j1006]
-            _Psr = Psr[_j1006]
-            _Fd = -2.0*_u*c*math.sqrt(_D*_Psr)/math.sqrt(m)
-            F[_j1006] = _Fc + _Fd
-            Fd[_j1006] = _Fd
-        # Psi and the u-rates of (30)-(32) at the nodes
-        for _j1008 in range(6):
-            if _j1008 >= nq:
-                break
-            _Qj = Q[_j1008]
-            _Pj = P[_j1008]
-            _u = u[_j1008]
-            _sigma = sigma[_j1008]
-            _sinQ = sinQ[_j1008]
+            _sigma = sigma[_j1006]
+            _sinQ = sinQ[_j1006]
             _S1F = 0.0
-            for _j1009 in range(6):
-                if _j1009 >= nq:
+            for _j1007 in range(6):
+                if _j1007 >= nq:
                     break
-                _S1F += S1[_j1008, _j1009]*F[_j1009]
+                _S1F += S1[_j1006, _j1007]*F[_j1007]
             _x1 = _S1F/_u**2
             _x2 = math.sqrt(m)
             _x3 = math.sqrt(_D)/math.sqrt(_x1)
@@ -528,34 +506,34 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, gu
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
-            ft[_j1008] = _ft
-            fq[_j1008] = _fq
-            fp[_j1008] = _fp
-            Psi[_j1008] = _Psi
+            ft[_j1006] = _ft
+            fq[_j1006] = _fq
+            fp[_j1006] = _fp
+            Psi[_j1006] = _Psi
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
         _wfp = 0.0
         _Wpass = 0.0
-        for _j1010 in range(6):
-            if _j1010 >= nq:
+        for _j1008 in range(6):
+            if _j1008 >= nq:
                 break
-            _wfq += w[_j1010]*fq[_j1010]
-            _wfp += w[_j1010]*fp[_j1010]
-            _Wpass += w1[_j1010]*F[_j1010]
+            _wfq += w[_j1008]*fq[_j1008]
+            _wfp += w[_j1008]*fp[_j1008]
+            _Wpass += w1[_j1008]*F[_j1008]
         # the next iterate at the nodes
-        for _j1013 in range(6):
-            if _j1013 >= nq:
+        for _j1011 in range(6):
+            if _j1011 >= nq:
                 break
             _Sfq = 0.0
             _Sfp = 0.0
-            for _j1014 in range(6):
-                if _j1014 >= nq:
+            for _j1012 in range(6):
+                if _j1012 >= nq:
                     break
-                _Sfq += S[_j1013, _j1014]*fq[_j1014]
-                _Sfp += S[_j1013, _j1014]*fp[_j1014]
-            Q_next[_j1013] = _Sfq + q_th
-            P_next[_j1013] = _Sfp + m*q_r**2*q_thd
+                _Sfq += S[_j1011, _j1012]*fq[_j1012]
+                _Sfp += S[_j1011, _j1012]*fp[_j1012]
+            Q_next[_j1011] = _Sfq + q_th
+            P_next[_j1011] = _Sfp + m*q_r**2*q_thd
         # D = q_r_lo - q_r_b, or to the leg force's zero (liftoff force)
         _x4 = k_d*l0
         _x5 = k_d*q_r
@@ -568,47 +546,42 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, gu
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0))
-        for _j1015 in range(6):
-            if _j1015 >= nq:
+        for _j1013 in range(6):
+            if _j1013 >= nq:
                 break
-            _conv0 = _conv0 and abs(Q_next[_j1015] - Q[_j1015]) <= tol*(1.0)
-            Q[_j1015] = Q_next[_j1015]
-            _conv0 = (_conv0 and abs(P_next[_j1015] - P[_j1015]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            _conv0 = _conv0 and abs(Q_next[_j1013] - Q[_j1013]) <= tol*(1.0)
+            Q[_j1013] = Q_next[_j1013]
+            _conv0 = (_conv0 and abs(P_next[_j1013] - P[_j1013]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
-            P[_j1015] = P_next[_j1015]
-            Psr[_j1015] = Psi[_j1015]
+            P[_j1013] = P_next[_j1013]
+            Psr[_j1013] = Psi[_j1013]
         _D = _n0_0
         _passes += 1.0
     _t_end = 0.0
     _q_end = 0.0
     _p_end = 0.0
     _work = 0.0
-    for _j1016 in range(6):
-        if _j1016 >= nq:
+    for _j1014 in range(6):
+        if _j1014 >= nq:
             break
-        _t_end += w[_j1016]*ft[_j1016]
-        _q_end += w[_j1016]*fq[_j1016]
-        _p_end += w[_j1016]*fp[_j1016]
-        _work += w1[_j1016]*F[_j1016]
+        _t_end += w[_j1014]*ft[_j1014]
+        _q_end += w[_j1014]*fq[_j1014]
+        _p_end += w[_j1014]*fp[_j1014]
+        _work += w1[_j1014]*F[_j1014]
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     t_half = _t_end
     end_q_th = _q_end + q_th
-    _lo_q_r = q_r_lo
     end_q_rd = 2.0*math.sqrt(_D*_work)/math.sqrt(m)
     _lo_q_thd = (_p_end + m*q_r**2*q_thd)/(m*q_r_lo**2)
     passes = _passes
-    # liftoff at q_r_b + D, short of q_r_lo (where the leg force falls to 0)
+    # liftoff at q_r_lo, or at q_r_b + D short of it
     _x9 = _D + q_r
-    _short = ((1.0) if (_D < -q_r + q_r_lo) else (0.0))
-    _f_q_r = _x9
-    _f_q_thd = (_p_end + m*q_r**2*q_thd)/(_x9**2*m)
-    # liftoff state
-    _x10 = (_short == 1.0)
-    end_q_r = ((_f_q_r) if _x10 else (_lo_q_r))
-    end_q_thd = ((_f_q_thd) if _x10 else (_lo_q_thd))
+    _x10 = (_D < -q_r + q_r_lo)
+    end_q_r = ((_x9) if _x10 else (q_r_lo))
+    end_q_thd = (((_p_end + m*q_r**2*q_thd)/(_x9**2*m)) if _x10 else (_lo_q_thd))
     # every output finite, or the inputs were far outside a physical range
     if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes,))):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
 #   flight.py sha256:af908ea30b1fc141
-#   iterative.py sha256:1b9049432d89bd58
+#   iterative.py sha256:6c68b56d8ea0aa73
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

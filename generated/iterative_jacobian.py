@@ -471,7 +471,7 @@ def schwind_compression_jvp7_65b25d(_a, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 391
+    # Total ops: 370
     (q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, guess_q_th, guess_q_thd, nodes, iterations, tol,
         d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1, d_guess_q_th__1, d_guess_q_thd__1,
         d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2, d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3,
@@ -490,17 +490,16 @@ def schwind_compression_jvp7_65b25d(_a, out):
         d_P0__4, d_P0__5, Psr0, d_Q0__6, d_P0__6, d_Psr0__0, d_Psr0__1, d_Psr0__2, d_Psr0__3, d_Psr0__4,
         d_Psr0__5, d_Psr0__6, Q, P, Psr, d_Q__0, d_Q__1, d_Q__2, d_Q__3, d_Q__4, d_Q__5, d_Q__6, d_P__0,
         d_P__1, d_P__2, d_P__3, d_P__4, d_P__5, d_P__6, d_Psr__0, d_Psr__1, d_Psr__2, d_Psr__3, d_Psr__4,
-        d_Psr__5, d_Psr__6, sigma, Fc, sinQ, d_sigma__0, d_sigma__1, d_sigma__2, d_sigma__3, d_sigma__4,
-        d_sigma__5, d_sigma__6, d_Fc__0, d_Fc__1, d_Fc__2, d_Fc__3, d_Fc__4, d_Fc__5, d_Fc__6, d_sinQ__0,
-        d_sinQ__1, d_sinQ__2, d_sinQ__3, d_sinQ__4, d_sinQ__5, d_sinQ__6, F, d_F__0, d_F__1, d_F__2, d_F__3,
-        d_F__4, d_F__5, d_F__6, ft, fq, fp, Psi, d_ft__0, d_ft__1, d_ft__2, d_ft__3, d_ft__4, d_ft__5,
-        d_ft__6, d_fq__0, d_fq__1, d_fq__2, d_fq__3, d_fq__4, d_fq__5, d_fq__6, d_fp__0, d_fp__1, d_fp__2,
-        d_fp__3, d_fp__4, d_fp__5, d_fp__6, d_Psi__0, d_Psi__1, d_Psi__2, d_Psi__3, d_Psi__4, d_Psi__5,
-        d_Psi__6, G, d_G__0, d_G__1, d_G__2, d_G__3, d_G__4, d_G__5, d_G__6, Q_next, P_next, d_Q_next__0,
-        d_Q_next__1, d_Q_next__2, d_Q_next__3, d_Q_next__4, d_Q_next__5, d_Q_next__6, d_P_next__0,
-        d_P_next__1, d_P_next__2, d_P_next__3, d_P_next__4, d_P_next__5, d_P_next__6, Shape, d_Shape__0,
-        d_Shape__1, d_Shape__2, d_Shape__3, d_Shape__4, d_Shape__5, d_Shape__6,) = (node_arrays(stack(1728),
-        144, 12))
+        d_Psr__5, d_Psr__6, sigma, F, sinQ, d_sigma__0, d_sigma__1, d_sigma__2, d_sigma__3, d_sigma__4,
+        d_sigma__5, d_sigma__6, d_F__0, d_F__1, d_F__2, d_F__3, d_F__4, d_F__5, d_F__6, d_sinQ__0, d_sinQ__1,
+        d_sinQ__2, d_sinQ__3, d_sinQ__4, d_sinQ__5, d_sinQ__6, ft, fq, fp, Psi, d_ft__0, d_ft__1, d_ft__2,
+        d_ft__3, d_ft__4, d_ft__5, d_ft__6, d_fq__0, d_fq__1, d_fq__2, d_fq__3, d_fq__4, d_fq__5, d_fq__6,
+        d_fp__0, d_fp__1, d_fp__2, d_fp__3, d_fp__4, d_fp__5, d_fp__6, d_Psi__0, d_Psi__1, d_Psi__2, d_Psi__3,
+        d_Psi__4, d_Psi__5, d_Psi__6, G, d_G__0, d_G__1, d_G__2, d_G__3, d_G__4, d_G__5, d_G__6, Q_next,
+        P_next, d_Q_next__0, d_Q_next__1, d_Q_next__2, d_Q_next__3, d_Q_next__4, d_Q_next__5, d_Q_next__6,
+        d_P_next__0, d_P_next__1, d_P_next__2, d_P_next__3, d_P_next__4, d_P_next__5, d_P_next__6, Shape,
+        d_Shape__0, d_Shape__1, d_Shape__2, d_Shape__3, d_Shape__4, d_Shape__5, d_Shape__6,
+        ) = (node_arrays(stack(1632), 136, 12))
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
@@ -540,59 +539,43 @@ def schwind_compression_jvp7_65b25d(_a, out):
     # Psi at the nodes, zeroth iterate
     for _j1002 in range(int(nq)):
         Psr0[_j1002] = 1.0
-    # d_Q0__6: zero
+    # tangents that are 0
     for _j1004 in range(int(nq)):
         d_Q0__6[_j1004] = 0.0
-    # d_P0__6: zero
-    for _j1006 in range(int(nq)):
-        d_P0__6[_j1006] = 0.0
-    # d_Psr0__0: zero
-    for _j1008 in range(int(nq)):
-        d_Psr0__0[_j1008] = 0.0
-    # d_Psr0__1: zero
-    for _j1010 in range(int(nq)):
-        d_Psr0__1[_j1010] = 0.0
-    # d_Psr0__2: zero
-    for _j1012 in range(int(nq)):
-        d_Psr0__2[_j1012] = 0.0
-    # d_Psr0__3: zero
-    for _j1014 in range(int(nq)):
-        d_Psr0__3[_j1014] = 0.0
-    # d_Psr0__4: zero
-    for _j1016 in range(int(nq)):
-        d_Psr0__4[_j1016] = 0.0
-    # d_Psr0__5: zero
-    for _j1018 in range(int(nq)):
-        d_Psr0__5[_j1018] = 0.0
-    # d_Psr0__6: zero
-    for _j1020 in range(int(nq)):
-        d_Psr0__6[_j1020] = 0.0
+        d_P0__6[_j1004] = 0.0
+        d_Psr0__0[_j1004] = 0.0
+        d_Psr0__1[_j1004] = 0.0
+        d_Psr0__2[_j1004] = 0.0
+        d_Psr0__3[_j1004] = 0.0
+        d_Psr0__4[_j1004] = 0.0
+        d_Psr0__5[_j1004] = 0.0
+        d_Psr0__6[_j1004] = 0.0
     # Picard passes on the node values (collocation in u)
-    for _j1066 in range(int(nq)):
-        Q[_j1066] = Q0[_j1066]
-        P[_j1066] = P0[_j1066]
-        Psr[_j1066] = Psr0[_j1066]
-        d_Q__0[_j1066] = d_Q0__0[_j1066]
-        d_Q__1[_j1066] = d_Q0__1[_j1066]
-        d_Q__2[_j1066] = d_Q0__2[_j1066]
-        d_Q__3[_j1066] = d_Q0__3[_j1066]
-        d_Q__4[_j1066] = d_Q0__4[_j1066]
-        d_Q__5[_j1066] = d_Q0__5[_j1066]
-        d_Q__6[_j1066] = d_Q0__6[_j1066]
-        d_P__0[_j1066] = d_P0__0[_j1066]
-        d_P__1[_j1066] = d_P0__1[_j1066]
-        d_P__2[_j1066] = d_P0__2[_j1066]
-        d_P__3[_j1066] = d_P0__3[_j1066]
-        d_P__4[_j1066] = d_P0__4[_j1066]
-        d_P__5[_j1066] = d_P0__5[_j1066]
-        d_P__6[_j1066] = d_P0__6[_j1066]
-        d_Psr__0[_j1066] = d_Psr0__0[_j1066]
-        d_Psr__1[_j1066] = d_Psr0__1[_j1066]
-        d_Psr__2[_j1066] = d_Psr0__2[_j1066]
-        d_Psr__3[_j1066] = d_Psr0__3[_j1066]
-        d_Psr__4[_j1066] = d_Psr0__4[_j1066]
-        d_Psr__5[_j1066] = d_Psr0__5[_j1066]
-        d_Psr__6[_j1066] = d_Psr0__6[_j1066]
+    for _j1048 in range(int(nq)):
+        Q[_j1048] = Q0[_j1048]
+        P[_j1048] = P0[_j1048]
+        Psr[_j1048] = Psr0[_j1048]
+        d_Q__0[_j1048] = d_Q0__0[_j1048]
+        d_Q__1[_j1048] = d_Q0__1[_j1048]
+        d_Q__2[_j1048] = d_Q0__2[_j1048]
+        d_Q__3[_j1048] = d_Q0__3[_j1048]
+        d_Q__4[_j1048] = d_Q0__4[_j1048]
+        d_Q__5[_j1048] = d_Q0__5[_j1048]
+        d_Q__6[_j1048] = d_Q0__6[_j1048]
+        d_P__0[_j1048] = d_P0__0[_j1048]
+        d_P__1[_j1048] = d_P0__1[_j1048]
+        d_P__2[_j1048] = d_P0__2[_j1048]
+        d_P__3[_j1048] = d_P0__3[_j1048]
+        d_P__4[_j1048] = d_P0__4[_j1048]
+        d_P__5[_j1048] = d_P0__5[_j1048]
+        d_P__6[_j1048] = d_P0__6[_j1048]
+        d_Psr__0[_j1048] = d_Psr0__0[_j1048]
+        d_Psr__1[_j1048] = d_Psr0__1[_j1048]
+        d_Psr__2[_j1048] = d_Psr0__2[_j1048]
+        d_Psr__3[_j1048] = d_Psr0__3[_j1048]
+        d_Psr__4[_j1048] = d_Psr0__4[_j1048]
+        d_Psr__5[_j1048] = d_Psr0__5[_j1048]
+        d_Psr__6[_j1048] = d_Psr0__6[_j1048]
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
     _pki0 = (-guess_q_r + q_r, 1.0 - d_guess_q_r__0, -d_guess_q_r__1, -d_guess_q_r__2, -d_guess_q_r__3,
@@ -605,25 +588,33 @@ def schwind_compression_jvp7_65b25d(_a, out):
         (_D, _d_D__0, _d_D__1, _d_D__2, _d_D__3, _d_D__4, _d_D__5, _d_D__6, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return fail(out, STATUS_NOT_CONVERGED)
-        # node values of the pass: sigma, F_r (29), sin Q
-        for _j1022 in range(int(nq)):
-            _Qj = Q[_j1022]
-            _Pj = P[_j1022]
-            _u = u[_j1022]
-            _d_Qj__0 = d_Q__0[_j1022]
-            _d_Qj__1 = d_Q__1[_j1022]
-            _d_Qj__2 = d_Q__2[_j1022]
-            _d_Qj__3 = d_Q__3[_j1022]
-            _d_Qj__4 = d_Q__4[_j1022]
-            _d_Qj__5 = d_Q__5[_j1022]
-            _d_Qj__6 = d_Q__6[_j1022]
-            _d_Pj__0 = d_P__0[_j1022]
-            _d_Pj__1 = d_P__1[_j1022]
-            _d_Pj__2 = d_P__2[_j1022]
-            _d_Pj__3 = d_P__3[_j1022]
-            _d_Pj__4 = d_P__4[_j1022]
-            _d_Pj__5 = d_P__5[_j1022]
-            _d_Pj__6 = d_P__6[_j1022]
+        # node values of the pass: sigma, F_r (29) and the damper's force, sin Q
+        for _j1006 in range(int(nq)):
+            _Qj = Q[_j1006]
+            _Pj = P[_j1006]
+            _u = u[_j1006]
+            _Psr = Psr[_j1006]
+            _d_Qj__0 = d_Q__0[_j1006]
+            _d_Qj__1 = d_Q__1[_j1006]
+            _d_Qj__2 = d_Q__2[_j1006]
+            _d_Qj__3 = d_Q__3[_j1006]
+            _d_Qj__4 = d_Q__4[_j1006]
+            _d_Qj__5 = d_Q__5[_j1006]
+            _d_Qj__6 = d_Q__6[_j1006]
+            _d_Pj__0 = d_P__0[_j1006]
+            _d_Pj__1 = d_P__1[_j1006]
+            _d_Pj__2 = d_P__2[_j1006]
+            _d_Pj__3 = d_P__3[_j1006]
+            _d_Pj__4 = d_P__4[_j1006]
+            _d_Pj__5 = d_P__5[_j1006]
+            _d_Pj__6 = d_P__6[_j1006]
+            _d_Psr__0 = d_Psr__0[_j1006]
+            _d_Psr__1 = d_Psr__1[_j1006]
+            _d_Psr__2 = d_Psr__2[_j1006]
+            _d_Psr__3 = d_Psr__3[_j1006]
+            _d_Psr__4 = d_Psr__4[_j1006]
+            _d_Psr__5 = d_Psr__5[_j1006]
+            _d_Psr__6 = d_Psr__6[_j1006]
             _x0 = _u**2
             _x1 = _D*_x0
             _x2 = -_D + _x1 + q_r
@@ -663,96 +654,57 @@ def schwind_compression_jvp7_65b25d(_a, out):
             _d_sinQ__4 = _d_Qj__4*_pd__4
             _d_sinQ__5 = _d_Qj__5*_pd__4
             _d_sinQ__6 = _d_Qj__6*_pd__4
-            sigma[_j1022] = _sigma
-            Fc[_j1022] = _F
-            sinQ[_j1022] = _sinQ
-            d_sigma__0[_j1022] = _d_sigma__0
-            d_sigma__1[_j1022] = _d_sigma__1
-            d_sigma__2[_j1022] = _d_sigma__2
-            d_sigma__3[_j1022] = _d_sigma__3
-            d_sigma__4[_j1022] = _d_sigma__4
-            d_sigma__5[_j1022] = _d_sigma__5
-            d_sigma__6[_j1022] = _d_sigma__6
-            d_Fc__0[_j1022] = _d_F__0
-            d_Fc__1[_j1022] = _d_F__1
-            d_Fc__2[_j1022] = _d_F__2
-            d_Fc__3[_j1022] = _d_F__3
-            d_Fc__4[_j1022] = _d_F__4
-            d_Fc__5[_j1022] = _d_F__5
-            d_Fc__6[_j1022] = _d_F__6
-            d_sinQ__0[_j1022] = _d_sinQ__0
-            d_sinQ__1[_j1022] = _d_sinQ__1
-            d_sinQ__2[_j1022] = _d_sinQ__2
-            d_sinQ__3[_j1022] = _d_sinQ__3
-            d_sinQ__4[_j1022] = _d_sinQ__4
-            d_sinQ__5[_j1022] = _d_sinQ__5
-            d_sinQ__6[_j1022] = _d_sinQ__6
-        # F_r with the damper's force at the previous pass's Psi (0 at c = 0)
-        for _j1024 in range(int(nq)):
-            _Fc = Fc[_j1024]
-            _u = u[_j1024]
-            _Psr = Psr[_j1024]
-            _d_Fc__0 = d_Fc__0[_j1024]
-            _d_Fc__1 = d_Fc__1[_j1024]
-            _d_Fc__2 = d_Fc__2[_j1024]
-            _d_Fc__3 = d_Fc__3[_j1024]
-            _d_Fc__4 = d_Fc__4[_j1024]
-            _d_Fc__5 = d_Fc__5[_j1024]
-            _d_Fc__6 = d_Fc__6[_j1024]
-            _d_Psr__0 = d_Psr__0[_j1024]
-            _d_Psr__1 = d_Psr__1[_j1024]
-            _d_Psr__2 = d_Psr__2[_j1024]
-            _d_Psr__3 = d_Psr__3[_j1024]
-            _d_Psr__4 = d_Psr__4[_j1024]
-            _d_Psr__5 = d_Psr__5[_j1024]
-            _d_Psr__6 = d_Psr__6[_j1024]
-            _x10 = math.sqrt(_Psr)
-            _x11 = _u*_x10
-            _x12 = _x11*c
-            _Fd = -_x12*q_rd
-            _pd__5 = -0.5*_u*c*q_rd/_x10
-            _d_Fd__0 = _d_Psr__0*_pd__5
-            _d_Fd__1 = _d_Psr__1*_pd__5 - _x12
-            _d_Fd__2 = _d_Psr__2*_pd__5
-            _d_Fd__3 = _d_Psr__3*_pd__5
-            _d_Fd__4 = _d_Psr__4*_pd__5
-            _d_Fd__5 = _d_Psr__5*_pd__5
-            _d_Fd__6 = _d_Psr__6*_pd__5 - _x11*q_rd
-            F[_j1024] = _Fc + _Fd
-            d_F__0[_j1024] = _d_Fc__0 + _d_Fd__0
-            d_F__1[_j1024] = _d_Fc__1 + _d_Fd__1
-            d_F__2[_j1024] = _d_Fc__2 + _d_Fd__2
-            d_F__3[_j1024] = _d_Fc__3 + _d_Fd__3
-            d_F__4[_j1024] = _d_Fc__4 + _d_Fd__4
-            d_F__5[_j1024] = _d_Fc__5 + _d_Fd__5
-            d_F__6[_j1024] = _d_Fc__6 + _d_Fd__6
+            sigma[_j1006] = _sigma
+            F[_j1006] = _F - math.sqrt(_Psr)*_u*c*q_rd
+            sinQ[_j1006] = _sinQ
+            d_sigma__0[_j1006] = _d_sigma__0
+            d_sigma__1[_j1006] = _d_sigma__1
+            d_sigma__2[_j1006] = _d_sigma__2
+            d_sigma__3[_j1006] = _d_sigma__3
+            d_sigma__4[_j1006] = _d_sigma__4
+            d_sigma__5[_j1006] = _d_sigma__5
+            d_sigma__6[_j1006] = _d_sigma__6
+            d_F__0[_j1006] = _d_F__0 - 0.5*_d_Psr__0*_u*c*q_rd/math.sqrt(_Psr)
+            d_F__1[_j1006] = -math.sqrt(_Psr)*_u*c + _d_F__1 - 0.5*_d_Psr__1*_u*c*q_rd/math.sqrt(_Psr)
+            d_F__2[_j1006] = _d_F__2 - 0.5*_d_Psr__2*_u*c*q_rd/math.sqrt(_Psr)
+            d_F__3[_j1006] = _d_F__3 - 0.5*_d_Psr__3*_u*c*q_rd/math.sqrt(_Psr)
+            d_F__4[_j1006] = _d_F__4 - 0.5*_d_Psr__4*_u*c*q_rd/math.sqrt(_Psr)
+            d_F__5[_j1006] = _d_F__5 - 0.5*_d_Psr__5*_u*c*q_rd/math.sqrt(_Psr)
+            d_F__6[_j1006] = -math.sqrt(_Psr)*_u*q_rd + _d_F__6 - 0.5*_d_Psr__6*_u*c*q_rd/math.sqrt(_Psr)
+            d_sinQ__0[_j1006] = _d_sinQ__0
+            d_sinQ__1[_j1006] = _d_sinQ__1
+            d_sinQ__2[_j1006] = _d_sinQ__2
+            d_sinQ__3[_j1006] = _d_sinQ__3
+            d_sinQ__4[_j1006] = _d_sinQ__4
+            d_sinQ__5[_j1006] = _d_sinQ__5
+            d_sinQ__6[_j1006] = _d_sinQ__6
         # Psi and the u-rates of (30)-(32) at the nodes
-        for _j1026 in range(int(nq)):
-            _Pj = P[_j1026]
-            _u = u[_j1026]
-            _sigma = sigma[_j1026]
-            _sinQ = sinQ[_j1026]
-            _d_Pj__0 = d_P__0[_j1026]
-            _d_Pj__1 = d_P__1[_j1026]
-            _d_Pj__2 = d_P__2[_j1026]
-            _d_Pj__3 = d_P__3[_j1026]
-            _d_Pj__4 = d_P__4[_j1026]
-            _d_Pj__5 = d_P__5[_j1026]
-            _d_Pj__6 = d_P__6[_j1026]
-            _d_sigma__0 = d_sigma__0[_j1026]
-            _d_sigma__1 = d_sigma__1[_j1026]
-            _d_sigma__2 = d_sigma__2[_j1026]
-            _d_sigma__3 = d_sigma__3[_j1026]
-            _d_sigma__4 = d_sigma__4[_j1026]
-            _d_sigma__5 = d_sigma__5[_j1026]
-            _d_sigma__6 = d_sigma__6[_j1026]
-            _d_sinQ__0 = d_sinQ__0[_j1026]
-            _d_sinQ__1 = d_sinQ__1[_j1026]
-            _d_sinQ__2 = d_sinQ__2[_j1026]
-            _d_sinQ__3 = d_sinQ__3[_j1026]
-            _d_sinQ__4 = d_sinQ__4[_j1026]
-            _d_sinQ__5 = d_sinQ__5[_j1026]
-            _d_sinQ__6 = d_sinQ__6[_j1026]
+        for _j1008 in range(int(nq)):
+            _Pj = P[_j1008]
+            _u = u[_j1008]
+            _sigma = sigma[_j1008]
+            _sinQ = sinQ[_j1008]
+            _d_Pj__0 = d_P__0[_j1008]
+            _d_Pj__1 = d_P__1[_j1008]
+            _d_Pj__2 = d_P__2[_j1008]
+            _d_Pj__3 = d_P__3[_j1008]
+            _d_Pj__4 = d_P__4[_j1008]
+            _d_Pj__5 = d_P__5[_j1008]
+            _d_Pj__6 = d_P__6[_j1008]
+            _d_sigma__0 = d_sigma__0[_j1008]
+            _d_sigma__1 = d_sigma__1[_j1008]
+            _d_sigma__2 = d_sigma__2[_j1008]
+            _d_sigma__3 = d_sigma__3[_j1008]
+            _d_sigma__4 = d_sigma__4[_j1008]
+            _d_sigma__5 = d_sigma__5[_j1008]
+            _d_sigma__6 = d_sigma__6[_j1008]
+            _d_sinQ__0 = d_sinQ__0[_j1008]
+            _d_sinQ__1 = d_sinQ__1[_j1008]
+            _d_sinQ__2 = d_sinQ__2[_j1008]
+            _d_sinQ__3 = d_sinQ__3[_j1008]
+            _d_sinQ__4 = d_sinQ__4[_j1008]
+            _d_sinQ__5 = d_sinQ__5[_j1008]
+            _d_sinQ__6 = d_sinQ__6[_j1008]
             _S1F = 0.0
             _d_S1F__0 = 0.0
             _d_S1F__1 = 0.0
@@ -761,112 +713,112 @@ def schwind_compression_jvp7_65b25d(_a, out):
             _d_S1F__4 = 0.0
             _d_S1F__5 = 0.0
             _d_S1F__6 = 0.0
-            for _j1027 in range(int(nq)):
-                _S1F += S1[_j1026, _j1027]*F[_j1027]
-                _d_S1F__0 += S1[_j1026, _j1027]*d_F__0[_j1027]
-                _d_S1F__1 += S1[_j1026, _j1027]*d_F__1[_j1027]
-                _d_S1F__2 += S1[_j1026, _j1027]*d_F__2[_j1027]
-                _d_S1F__3 += S1[_j1026, _j1027]*d_F__3[_j1027]
-                _d_S1F__4 += S1[_j1026, _j1027]*d_F__4[_j1027]
-                _d_S1F__5 += S1[_j1026, _j1027]*d_F__5[_j1027]
-                _d_S1F__6 += S1[_j1026, _j1027]*d_F__6[_j1027]
-            _x13 = _u**-2
-            _x14 = _S1F*_x13
-            _Psi = _x14
-            _pd__6 = _x13
-            _d_Psi__0 = _d_S1F__0*_pd__6
-            _d_Psi__1 = _d_S1F__1*_pd__6
-            _d_Psi__2 = _d_S1F__2*_pd__6
-            _d_Psi__3 = _d_S1F__3*_pd__6
-            _d_Psi__4 = _d_S1F__4*_pd__6
-            _d_Psi__5 = _d_S1F__5*_pd__6
-            _d_Psi__6 = _d_S1F__6*_pd__6
-            _x15 = math.sqrt(_D)
-            _x16 = math.sqrt(m)
-            _x17 = (1.0/math.sqrt(_x14))
-            _x18 = _x16*_x17
-            _ft = _x15*_x18
-            _x19 = (0.5)/_x15
-            _pd__7 = _x18*_x19
-            _x20 = (0.5)*_x15/(_x14*math.sqrt(_x14))
-            _pd__8 = -_x16*_x20
-            _d_ft__0 = _d_D__0*_pd__7 + _d_Psi__0*_pd__8
-            _d_ft__1 = _d_D__1*_pd__7 + _d_Psi__1*_pd__8
-            _d_ft__2 = _d_D__2*_pd__7 + _d_Psi__2*_pd__8
-            _d_ft__3 = _d_D__3*_pd__7 + _d_Psi__3*_pd__8
-            _d_ft__4 = _d_D__4*_pd__7 + _d_Psi__4*_pd__8
-            _d_ft__5 = _d_D__5*_pd__7 + _d_Psi__5*_pd__8
-            _d_ft__6 = _d_D__6*_pd__7 + _d_Psi__6*_pd__8
-            _x21 = _x15*_x17
-            _x22 = (1.0/_x16)
-            _x31 = (1.0/_sigma)
-            _x23 = _x22*_x31**2
-            _x24 = _x21*_x23
-            _fq = _Pj*_x24
-            _x25 = _Pj*_x23
-            _x26 = _x17*_x19
-            _pd__9 = _x25*_x26
-            _pd__10 = _x24
-            _pd__11 = -_x20*_x25
-            _pd__12 = -2.0*_Pj*_x21*_x22*_x31**3
-            _d_fq__0 = _d_D__0*_pd__9 + _d_Pj__0*_pd__10 + _d_Psi__0*_pd__11 + _d_sigma__0*_pd__12
-            _d_fq__1 = _d_D__1*_pd__9 + _d_Pj__1*_pd__10 + _d_Psi__1*_pd__11 + _d_sigma__1*_pd__12
-            _d_fq__2 = _d_D__2*_pd__9 + _d_Pj__2*_pd__10 + _d_Psi__2*_pd__11 + _d_sigma__2*_pd__12
-            _d_fq__3 = _d_D__3*_pd__9 + _d_Pj__3*_pd__10 + _d_Psi__3*_pd__11 + _d_sigma__3*_pd__12
-            _d_fq__4 = _d_D__4*_pd__9 + _d_Pj__4*_pd__10 + _d_Psi__4*_pd__11 + _d_sigma__4*_pd__12
-            _d_fq__5 = _d_D__5*_pd__9 + _d_Pj__5*_pd__10 + _d_Psi__5*_pd__11 + _d_sigma__5*_pd__12
-            _d_fq__6 = _d_D__6*_pd__9 + _d_Pj__6*_pd__10 + _d_Psi__6*_pd__11 + _d_sigma__6*_pd__12
-            _x27 = (m*math.sqrt(m))
-            _x28 = _x21*_x27*g_s
-            _x29 = _sinQ*_x28
-            _fp = _sigma*_x29
-            _x30 = _sigma*_sinQ*_x27*g_s
-            _pd__13 = _x26*_x30
-            _pd__14 = -_x20*_x30
-            _pd__15 = _x29
-            _pd__16 = _sigma*_x28
-            _d_fp__0 = _d_D__0*_pd__13 + _d_Psi__0*_pd__14 + _d_sigma__0*_pd__15 + _d_sinQ__0*_pd__16
-            _d_fp__1 = _d_D__1*_pd__13 + _d_Psi__1*_pd__14 + _d_sigma__1*_pd__15 + _d_sinQ__1*_pd__16
-            _d_fp__2 = _d_D__2*_pd__13 + _d_Psi__2*_pd__14 + _d_sigma__2*_pd__15 + _d_sinQ__2*_pd__16
-            _d_fp__3 = _d_D__3*_pd__13 + _d_Psi__3*_pd__14 + _d_sigma__3*_pd__15 + _d_sinQ__3*_pd__16
-            _d_fp__4 = _d_D__4*_pd__13 + _d_Psi__4*_pd__14 + _d_sigma__4*_pd__15 + _d_sinQ__4*_pd__16
-            _d_fp__5 = _d_D__5*_pd__13 + _d_Psi__5*_pd__14 + _d_sigma__5*_pd__15 + _d_sinQ__5*_pd__16
-            _d_fp__6 = _d_D__6*_pd__13 + _d_Psi__6*_pd__14 + _d_sigma__6*_pd__15 + _d_sinQ__6*_pd__16
+            for _j1009 in range(int(nq)):
+                _S1F += S1[_j1008, _j1009]*F[_j1009]
+                _d_S1F__0 += S1[_j1008, _j1009]*d_F__0[_j1009]
+                _d_S1F__1 += S1[_j1008, _j1009]*d_F__1[_j1009]
+                _d_S1F__2 += S1[_j1008, _j1009]*d_F__2[_j1009]
+                _d_S1F__3 += S1[_j1008, _j1009]*d_F__3[_j1009]
+                _d_S1F__4 += S1[_j1008, _j1009]*d_F__4[_j1009]
+                _d_S1F__5 += S1[_j1008, _j1009]*d_F__5[_j1009]
+                _d_S1F__6 += S1[_j1008, _j1009]*d_F__6[_j1009]
+            _x10 = _u**-2
+            _x11 = _S1F*_x10
+            _Psi = _x11
+            _pd__5 = _x10
+            _d_Psi__0 = _d_S1F__0*_pd__5
+            _d_Psi__1 = _d_S1F__1*_pd__5
+            _d_Psi__2 = _d_S1F__2*_pd__5
+            _d_Psi__3 = _d_S1F__3*_pd__5
+            _d_Psi__4 = _d_S1F__4*_pd__5
+            _d_Psi__5 = _d_S1F__5*_pd__5
+            _d_Psi__6 = _d_S1F__6*_pd__5
+            _x12 = math.sqrt(_D)
+            _x13 = math.sqrt(m)
+            _x14 = (1.0/math.sqrt(_x11))
+            _x15 = _x13*_x14
+            _ft = _x12*_x15
+            _x16 = (0.5)/_x12
+            _pd__6 = _x15*_x16
+            _x17 = (0.5)*_x12/(_x11*math.sqrt(_x11))
+            _pd__7 = -_x13*_x17
+            _d_ft__0 = _d_D__0*_pd__6 + _d_Psi__0*_pd__7
+            _d_ft__1 = _d_D__1*_pd__6 + _d_Psi__1*_pd__7
+            _d_ft__2 = _d_D__2*_pd__6 + _d_Psi__2*_pd__7
+            _d_ft__3 = _d_D__3*_pd__6 + _d_Psi__3*_pd__7
+            _d_ft__4 = _d_D__4*_pd__6 + _d_Psi__4*_pd__7
+            _d_ft__5 = _d_D__5*_pd__6 + _d_Psi__5*_pd__7
+            _d_ft__6 = _d_D__6*_pd__6 + _d_Psi__6*_pd__7
+            _x18 = _x12*_x14
+            _x19 = (1.0/_x13)
+            _x28 = (1.0/_sigma)
+            _x20 = _x19*_x28**2
+            _x21 = _x18*_x20
+            _fq = _Pj*_x21
+            _x22 = _Pj*_x20
+            _x23 = _x14*_x16
+            _pd__8 = _x22*_x23
+            _pd__9 = _x21
+            _pd__10 = -_x17*_x22
+            _pd__11 = -2.0*_Pj*_x18*_x19*_x28**3
+            _d_fq__0 = _d_D__0*_pd__8 + _d_Pj__0*_pd__9 + _d_Psi__0*_pd__10 + _d_sigma__0*_pd__11
+            _d_fq__1 = _d_D__1*_pd__8 + _d_Pj__1*_pd__9 + _d_Psi__1*_pd__10 + _d_sigma__1*_pd__11
+            _d_fq__2 = _d_D__2*_pd__8 + _d_Pj__2*_pd__9 + _d_Psi__2*_pd__10 + _d_sigma__2*_pd__11
+            _d_fq__3 = _d_D__3*_pd__8 + _d_Pj__3*_pd__9 + _d_Psi__3*_pd__10 + _d_sigma__3*_pd__11
+            _d_fq__4 = _d_D__4*_pd__8 + _d_Pj__4*_pd__9 + _d_Psi__4*_pd__10 + _d_sigma__4*_pd__11
+            _d_fq__5 = _d_D__5*_pd__8 + _d_Pj__5*_pd__9 + _d_Psi__5*_pd__10 + _d_sigma__5*_pd__11
+            _d_fq__6 = _d_D__6*_pd__8 + _d_Pj__6*_pd__9 + _d_Psi__6*_pd__10 + _d_sigma__6*_pd__11
+            _x24 = (m*math.sqrt(m))
+            _x25 = _x18*_x24*g_s
+            _x26 = _sinQ*_x25
+            _fp = _sigma*_x26
+            _x27 = _sigma*_sinQ*_x24*g_s
+            _pd__12 = _x23*_x27
+            _pd__13 = -_x17*_x27
+            _pd__14 = _x26
+            _pd__15 = _sigma*_x25
+            _d_fp__0 = _d_D__0*_pd__12 + _d_Psi__0*_pd__13 + _d_sigma__0*_pd__14 + _d_sinQ__0*_pd__15
+            _d_fp__1 = _d_D__1*_pd__12 + _d_Psi__1*_pd__13 + _d_sigma__1*_pd__14 + _d_sinQ__1*_pd__15
+            _d_fp__2 = _d_D__2*_pd__12 + _d_Psi__2*_pd__13 + _d_sigma__2*_pd__14 + _d_sinQ__2*_pd__15
+            _d_fp__3 = _d_D__3*_pd__12 + _d_Psi__3*_pd__13 + _d_sigma__3*_pd__14 + _d_sinQ__3*_pd__15
+            _d_fp__4 = _d_D__4*_pd__12 + _d_Psi__4*_pd__13 + _d_sigma__4*_pd__14 + _d_sinQ__4*_pd__15
+            _d_fp__5 = _d_D__5*_pd__12 + _d_Psi__5*_pd__13 + _d_sigma__5*_pd__14 + _d_sinQ__5*_pd__15
+            _d_fp__6 = _d_D__6*_pd__12 + _d_Psi__6*_pd__13 + _d_sigma__6*_pd__14 + _d_sinQ__6*_pd__15
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return fail(out, STATUS_IMAGINARY_MOMENTUM)
-            ft[_j1026] = _ft
-            fq[_j1026] = _fq
-            fp[_j1026] = _fp
-            Psi[_j1026] = _Psi
-            d_ft__0[_j1026] = _d_ft__0
-            d_ft__1[_j1026] = _d_ft__1
-            d_ft__2[_j1026] = _d_ft__2
-            d_ft__3[_j1026] = _d_ft__3
-            d_ft__4[_j1026] = _d_ft__4
-            d_ft__5[_j1026] = _d_ft__5
-            d_ft__6[_j1026] = _d_ft__6
-            d_fq__0[_j1026] = _d_fq__0
-            d_fq__1[_j1026] = _d_fq__1
-            d_fq__2[_j1026] = _d_fq__2
-            d_fq__3[_j1026] = _d_fq__3
-            d_fq__4[_j1026] = _d_fq__4
-            d_fq__5[_j1026] = _d_fq__5
-            d_fq__6[_j1026] = _d_fq__6
-            d_fp__0[_j1026] = _d_fp__0
-            d_fp__1[_j1026] = _d_fp__1
-            d_fp__2[_j1026] = _d_fp__2
-            d_fp__3[_j1026] = _d_fp__3
-            d_fp__4[_j1026] = _d_fp__4
-            d_fp__5[_j1026] = _d_fp__5
-            d_fp__6[_j1026] = _d_fp__6
-            d_Psi__0[_j1026] = _d_Psi__0
-            d_Psi__1[_j1026] = _d_Psi__1
-            d_Psi__2[_j1026] = _d_Psi__2
-            d_Psi__3[_j1026] = _d_Psi__3
-            d_Psi__4[_j1026] = _d_Psi__4
-            d_Psi__5[_j1026] = _d_Psi__5
-            d_Psi__6[_j1026] = _d_Psi__6
+            ft[_j1008] = _ft
+            fq[_j1008] = _fq
+            fp[_j1008] = _fp
+            Psi[_j1008] = _Psi
+            d_ft__0[_j1008] = _d_ft__0
+            d_ft__1[_j1008] = _d_ft__1
+            d_ft__2[_j1008] = _d_ft__2
+            d_ft__3[_j1008] = _d_ft__3
+            d_ft__4[_j1008] = _d_ft__4
+            d_ft__5[_j1008] = _d_ft__5
+            d_ft__6[_j1008] = _d_ft__6
+            d_fq__0[_j1008] = _d_fq__0
+            d_fq__1[_j1008] = _d_fq__1
+            d_fq__2[_j1008] = _d_fq__2
+            d_fq__3[_j1008] = _d_fq__3
+            d_fq__4[_j1008] = _d_fq__4
+            d_fq__5[_j1008] = _d_fq__5
+            d_fq__6[_j1008] = _d_fq__6
+            d_fp__0[_j1008] = _d_fp__0
+            d_fp__1[_j1008] = _d_fp__1
+            d_fp__2[_j1008] = _d_fp__2
+            d_fp__3[_j1008] = _d_fp__3
+            d_fp__4[_j1008] = _d_fp__4
+            d_fp__5[_j1008] = _d_fp__5
+            d_fp__6[_j1008] = _d_fp__6
+            d_Psi__0[_j1008] = _d_Psi__0
+            d_Psi__1[_j1008] = _d_Psi__1
+            d_Psi__2[_j1008] = _d_Psi__2
+            d_Psi__3[_j1008] = _d_Psi__3
+            d_Psi__4[_j1008] = _d_Psi__4
+            d_Psi__5[_j1008] = _d_Psi__5
+            d_Psi__6[_j1008] = _d_Psi__6
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
@@ -885,49 +837,49 @@ def schwind_compression_jvp7_65b25d(_a, out):
         _d_wfp__4 = 0.0
         _d_wfp__5 = 0.0
         _d_wfp__6 = 0.0
-        for _j1028 in range(int(nq)):
-            _wfq += w[_j1028]*fq[_j1028]
-            _d_wfq__0 += w[_j1028]*d_fq__0[_j1028]
-            _d_wfq__1 += w[_j1028]*d_fq__1[_j1028]
-            _d_wfq__2 += w[_j1028]*d_fq__2[_j1028]
-            _d_wfq__3 += w[_j1028]*d_fq__3[_j1028]
-            _d_wfq__4 += w[_j1028]*d_fq__4[_j1028]
-            _d_wfq__5 += w[_j1028]*d_fq__5[_j1028]
-            _d_wfq__6 += w[_j1028]*d_fq__6[_j1028]
-            _wfp += w[_j1028]*fp[_j1028]
-            _d_wfp__0 += w[_j1028]*d_fp__0[_j1028]
-            _d_wfp__1 += w[_j1028]*d_fp__1[_j1028]
-            _d_wfp__2 += w[_j1028]*d_fp__2[_j1028]
-            _d_wfp__3 += w[_j1028]*d_fp__3[_j1028]
-            _d_wfp__4 += w[_j1028]*d_fp__4[_j1028]
-            _d_wfp__5 += w[_j1028]*d_fp__5[_j1028]
-            _d_wfp__6 += w[_j1028]*d_fp__6[_j1028]
+        for _j1010 in range(int(nq)):
+            _wfq += w[_j1010]*fq[_j1010]
+            _d_wfq__0 += w[_j1010]*d_fq__0[_j1010]
+            _d_wfq__1 += w[_j1010]*d_fq__1[_j1010]
+            _d_wfq__2 += w[_j1010]*d_fq__2[_j1010]
+            _d_wfq__3 += w[_j1010]*d_fq__3[_j1010]
+            _d_wfq__4 += w[_j1010]*d_fq__4[_j1010]
+            _d_wfq__5 += w[_j1010]*d_fq__5[_j1010]
+            _d_wfq__6 += w[_j1010]*d_fq__6[_j1010]
+            _wfp += w[_j1010]*fp[_j1010]
+            _d_wfp__0 += w[_j1010]*d_fp__0[_j1010]
+            _d_wfp__1 += w[_j1010]*d_fp__1[_j1010]
+            _d_wfp__2 += w[_j1010]*d_fp__2[_j1010]
+            _d_wfp__3 += w[_j1010]*d_fp__3[_j1010]
+            _d_wfp__4 += w[_j1010]*d_fp__4[_j1010]
+            _d_wfp__5 += w[_j1010]*d_fp__5[_j1010]
+            _d_wfp__6 += w[_j1010]*d_fp__6[_j1010]
         # F_r minus its spring term
-        for _j1044 in range(int(nq)):
-            _F = F[_j1044]
-            _sigma = sigma[_j1044]
-            _d_F__0 = d_F__0[_j1044]
-            _d_F__1 = d_F__1[_j1044]
-            _d_F__2 = d_F__2[_j1044]
-            _d_F__3 = d_F__3[_j1044]
-            _d_F__4 = d_F__4[_j1044]
-            _d_F__5 = d_F__5[_j1044]
-            _d_F__6 = d_F__6[_j1044]
-            _d_sigma__0 = d_sigma__0[_j1044]
-            _d_sigma__1 = d_sigma__1[_j1044]
-            _d_sigma__2 = d_sigma__2[_j1044]
-            _d_sigma__3 = d_sigma__3[_j1044]
-            _d_sigma__4 = d_sigma__4[_j1044]
-            _d_sigma__5 = d_sigma__5[_j1044]
-            _d_sigma__6 = d_sigma__6[_j1044]
-            G[_j1044] = _F - k_c*(-_sigma + l0)
-            d_G__0[_j1044] = _d_F__0 + _d_sigma__0*k_c
-            d_G__1[_j1044] = _d_F__1 + _d_sigma__1*k_c
-            d_G__2[_j1044] = _d_F__2 + _d_sigma__2*k_c
-            d_G__3[_j1044] = _d_F__3 + _d_sigma__3*k_c
-            d_G__4[_j1044] = _d_F__4 + _d_sigma__4*k_c + _sigma - l0
-            d_G__5[_j1044] = _d_F__5 + _d_sigma__5*k_c
-            d_G__6[_j1044] = _d_F__6 + _d_sigma__6*k_c
+        for _j1026 in range(int(nq)):
+            _F = F[_j1026]
+            _sigma = sigma[_j1026]
+            _d_F__0 = d_F__0[_j1026]
+            _d_F__1 = d_F__1[_j1026]
+            _d_F__2 = d_F__2[_j1026]
+            _d_F__3 = d_F__3[_j1026]
+            _d_F__4 = d_F__4[_j1026]
+            _d_F__5 = d_F__5[_j1026]
+            _d_F__6 = d_F__6[_j1026]
+            _d_sigma__0 = d_sigma__0[_j1026]
+            _d_sigma__1 = d_sigma__1[_j1026]
+            _d_sigma__2 = d_sigma__2[_j1026]
+            _d_sigma__3 = d_sigma__3[_j1026]
+            _d_sigma__4 = d_sigma__4[_j1026]
+            _d_sigma__5 = d_sigma__5[_j1026]
+            _d_sigma__6 = d_sigma__6[_j1026]
+            G[_j1026] = _F - k_c*(-_sigma + l0)
+            d_G__0[_j1026] = _d_F__0 + _d_sigma__0*k_c
+            d_G__1[_j1026] = _d_F__1 + _d_sigma__1*k_c
+            d_G__2[_j1026] = _d_F__2 + _d_sigma__2*k_c
+            d_G__3[_j1026] = _d_F__3 + _d_sigma__3*k_c
+            d_G__4[_j1026] = _d_F__4 + _d_sigma__4*k_c + _sigma - l0
+            d_G__5[_j1026] = _d_F__5 + _d_sigma__5*k_c
+            d_G__6[_j1026] = _d_F__6 + _d_sigma__6*k_c
         _rbar = 0.0
         _d_rbar__0 = 0.0
         _d_rbar__1 = 0.0
@@ -944,25 +896,25 @@ def schwind_compression_jvp7_65b25d(_a, out):
         _d_Wpass__4 = 0.0
         _d_Wpass__5 = 0.0
         _d_Wpass__6 = 0.0
-        for _j1046 in range(int(nq)):
-            _rbar += w1[_j1046]*G[_j1046]
-            _d_rbar__0 += w1[_j1046]*d_G__0[_j1046]
-            _d_rbar__1 += w1[_j1046]*d_G__1[_j1046]
-            _d_rbar__2 += w1[_j1046]*d_G__2[_j1046]
-            _d_rbar__3 += w1[_j1046]*d_G__3[_j1046]
-            _d_rbar__4 += w1[_j1046]*d_G__4[_j1046]
-            _d_rbar__5 += w1[_j1046]*d_G__5[_j1046]
-            _d_rbar__6 += w1[_j1046]*d_G__6[_j1046]
-            _Wpass += w1[_j1046]*F[_j1046]
-            _d_Wpass__0 += w1[_j1046]*d_F__0[_j1046]
-            _d_Wpass__1 += w1[_j1046]*d_F__1[_j1046]
-            _d_Wpass__2 += w1[_j1046]*d_F__2[_j1046]
-            _d_Wpass__3 += w1[_j1046]*d_F__3[_j1046]
-            _d_Wpass__4 += w1[_j1046]*d_F__4[_j1046]
-            _d_Wpass__5 += w1[_j1046]*d_F__5[_j1046]
-            _d_Wpass__6 += w1[_j1046]*d_F__6[_j1046]
+        for _j1028 in range(int(nq)):
+            _rbar += w1[_j1028]*G[_j1028]
+            _d_rbar__0 += w1[_j1028]*d_G__0[_j1028]
+            _d_rbar__1 += w1[_j1028]*d_G__1[_j1028]
+            _d_rbar__2 += w1[_j1028]*d_G__2[_j1028]
+            _d_rbar__3 += w1[_j1028]*d_G__3[_j1028]
+            _d_rbar__4 += w1[_j1028]*d_G__4[_j1028]
+            _d_rbar__5 += w1[_j1028]*d_G__5[_j1028]
+            _d_rbar__6 += w1[_j1028]*d_G__6[_j1028]
+            _Wpass += w1[_j1028]*F[_j1028]
+            _d_Wpass__0 += w1[_j1028]*d_F__0[_j1028]
+            _d_Wpass__1 += w1[_j1028]*d_F__1[_j1028]
+            _d_Wpass__2 += w1[_j1028]*d_F__2[_j1028]
+            _d_Wpass__3 += w1[_j1028]*d_F__3[_j1028]
+            _d_Wpass__4 += w1[_j1028]*d_F__4[_j1028]
+            _d_Wpass__5 += w1[_j1028]*d_F__5[_j1028]
+            _d_Wpass__6 += w1[_j1028]*d_F__6[_j1028]
         # the next iterate at the nodes
-        for _j1062 in range(int(nq)):
+        for _j1044 in range(int(nq)):
             _Sfq = 0.0
             _Sfp = 0.0
             _d_Sfq__0 = 0.0
@@ -979,111 +931,111 @@ def schwind_compression_jvp7_65b25d(_a, out):
             _d_Sfp__4 = 0.0
             _d_Sfp__5 = 0.0
             _d_Sfp__6 = 0.0
-            for _j1063 in range(int(nq)):
-                _Sfq += S[_j1062, _j1063]*fq[_j1063]
-                _Sfp += S[_j1062, _j1063]*fp[_j1063]
-                _d_Sfq__0 += S[_j1062, _j1063]*d_fq__0[_j1063]
-                _d_Sfq__1 += S[_j1062, _j1063]*d_fq__1[_j1063]
-                _d_Sfq__2 += S[_j1062, _j1063]*d_fq__2[_j1063]
-                _d_Sfq__3 += S[_j1062, _j1063]*d_fq__3[_j1063]
-                _d_Sfq__4 += S[_j1062, _j1063]*d_fq__4[_j1063]
-                _d_Sfq__5 += S[_j1062, _j1063]*d_fq__5[_j1063]
-                _d_Sfq__6 += S[_j1062, _j1063]*d_fq__6[_j1063]
-                _d_Sfp__0 += S[_j1062, _j1063]*d_fp__0[_j1063]
-                _d_Sfp__1 += S[_j1062, _j1063]*d_fp__1[_j1063]
-                _d_Sfp__2 += S[_j1062, _j1063]*d_fp__2[_j1063]
-                _d_Sfp__3 += S[_j1062, _j1063]*d_fp__3[_j1063]
-                _d_Sfp__4 += S[_j1062, _j1063]*d_fp__4[_j1063]
-                _d_Sfp__5 += S[_j1062, _j1063]*d_fp__5[_j1063]
-                _d_Sfp__6 += S[_j1062, _j1063]*d_fp__6[_j1063]
-            Q_next[_j1062] = -_Sfq + _wfq + q_th
-            P_next[_j1062] = -_Sfp + _wfp + m*q_r**2*q_thd
-            d_Q_next__0[_j1062] = -_d_Sfq__0 + _d_wfq__0
-            d_Q_next__1[_j1062] = -_d_Sfq__1 + _d_wfq__1
-            d_Q_next__2[_j1062] = -_d_Sfq__2 + _d_wfq__2 + 1.0
-            d_Q_next__3[_j1062] = -_d_Sfq__3 + _d_wfq__3
-            d_Q_next__4[_j1062] = -_d_Sfq__4 + _d_wfq__4
-            d_Q_next__5[_j1062] = -_d_Sfq__5 + _d_wfq__5
-            d_Q_next__6[_j1062] = -_d_Sfq__6 + _d_wfq__6
-            d_P_next__0[_j1062] = -_d_Sfp__0 + _d_wfp__0 + 2.0*m*q_r*q_thd
-            d_P_next__1[_j1062] = -_d_Sfp__1 + _d_wfp__1
-            d_P_next__2[_j1062] = -_d_Sfp__2 + _d_wfp__2
-            d_P_next__3[_j1062] = -_d_Sfp__3 + _d_wfp__3 + m*q_r**2
-            d_P_next__4[_j1062] = -_d_Sfp__4 + _d_wfp__4
-            d_P_next__5[_j1062] = -_d_Sfp__5 + _d_wfp__5
-            d_P_next__6[_j1062] = -_d_Sfp__6 + _d_wfp__6
+            for _j1045 in range(int(nq)):
+                _Sfq += S[_j1044, _j1045]*fq[_j1045]
+                _Sfp += S[_j1044, _j1045]*fp[_j1045]
+                _d_Sfq__0 += S[_j1044, _j1045]*d_fq__0[_j1045]
+                _d_Sfq__1 += S[_j1044, _j1045]*d_fq__1[_j1045]
+                _d_Sfq__2 += S[_j1044, _j1045]*d_fq__2[_j1045]
+                _d_Sfq__3 += S[_j1044, _j1045]*d_fq__3[_j1045]
+                _d_Sfq__4 += S[_j1044, _j1045]*d_fq__4[_j1045]
+                _d_Sfq__5 += S[_j1044, _j1045]*d_fq__5[_j1045]
+                _d_Sfq__6 += S[_j1044, _j1045]*d_fq__6[_j1045]
+                _d_Sfp__0 += S[_j1044, _j1045]*d_fp__0[_j1045]
+                _d_Sfp__1 += S[_j1044, _j1045]*d_fp__1[_j1045]
+                _d_Sfp__2 += S[_j1044, _j1045]*d_fp__2[_j1045]
+                _d_Sfp__3 += S[_j1044, _j1045]*d_fp__3[_j1045]
+                _d_Sfp__4 += S[_j1044, _j1045]*d_fp__4[_j1045]
+                _d_Sfp__5 += S[_j1044, _j1045]*d_fp__5[_j1045]
+                _d_Sfp__6 += S[_j1044, _j1045]*d_fp__6[_j1045]
+            Q_next[_j1044] = -_Sfq + _wfq + q_th
+            P_next[_j1044] = -_Sfp + _wfp + m*q_r**2*q_thd
+            d_Q_next__0[_j1044] = -_d_Sfq__0 + _d_wfq__0
+            d_Q_next__1[_j1044] = -_d_Sfq__1 + _d_wfq__1
+            d_Q_next__2[_j1044] = -_d_Sfq__2 + _d_wfq__2 + 1.0
+            d_Q_next__3[_j1044] = -_d_Sfq__3 + _d_wfq__3
+            d_Q_next__4[_j1044] = -_d_Sfq__4 + _d_wfq__4
+            d_Q_next__5[_j1044] = -_d_Sfq__5 + _d_wfq__5
+            d_Q_next__6[_j1044] = -_d_Sfq__6 + _d_wfq__6
+            d_P_next__0[_j1044] = -_d_Sfp__0 + _d_wfp__0 + 2.0*m*q_r*q_thd
+            d_P_next__1[_j1044] = -_d_Sfp__1 + _d_wfp__1
+            d_P_next__2[_j1044] = -_d_Sfp__2 + _d_wfp__2
+            d_P_next__3[_j1044] = -_d_Sfp__3 + _d_wfp__3 + m*q_r**2
+            d_P_next__4[_j1044] = -_d_Sfp__4 + _d_wfp__4
+            d_P_next__5[_j1044] = -_d_Sfp__5 + _d_wfp__5
+            d_P_next__6[_j1044] = -_d_Sfp__6 + _d_wfp__6
         # D = q_r_td - q_r_b from the radial work
-        _x32 = m*q_rd**2
-        _x33 = l0 - q_r
-        _x34 = _x33*k_c
-        _x35 = 2.0*_rbar + _x34
-        _x36 = math.sqrt(_x32*k_c + _x35**2)
-        _x37 = _x35 + _x36
-        _x38 = (1.0/_x37)
-        _D_next = _x32*_x38
-        _x39 = (1.0/_x36)
-        _x40 = _x38**2
-        _x41 = _x32*_x40
-        _pd__17 = _x41*(-_x39*(4.0*_rbar + 2.0*_x34) - 2.0)
-        _x42 = _x39*k_c
-        _d_D_next__0 = _d_rbar__0*_pd__17 + _x41*(_x35*_x42 + k_c)
-        _d_D_next__1 = _d_rbar__1*_pd__17 + 2.0*_x38*m*q_rd - _x40*_x42*m**2*q_rd**3
-        _d_D_next__2 = _d_rbar__2*_pd__17
-        _d_D_next__3 = _d_rbar__3*_pd__17
-        _d_D_next__4 = _d_rbar__4*_pd__17 + _x41*(-_x33 - _x39*((0.5)*_x32 + (0.5)*_x35*(2.0*l0 - 2.0*q_r)))
-        _d_D_next__5 = _d_rbar__5*_pd__17
-        _d_D_next__6 = _d_rbar__6*_pd__17
+        _x29 = m*q_rd**2
+        _x30 = l0 - q_r
+        _x31 = _x30*k_c
+        _x32 = 2.0*_rbar + _x31
+        _x33 = math.sqrt(_x29*k_c + _x32**2)
+        _x34 = _x32 + _x33
+        _x35 = (1.0/_x34)
+        _D_next = _x29*_x35
+        _x36 = (1.0/_x33)
+        _x37 = _x35**2
+        _x38 = _x29*_x37
+        _pd__16 = _x38*(-_x36*(4.0*_rbar + 2.0*_x31) - 2.0)
+        _x39 = _x36*k_c
+        _d_D_next__0 = _d_rbar__0*_pd__16 + _x38*(_x32*_x39 + k_c)
+        _d_D_next__1 = _d_rbar__1*_pd__16 + 2.0*_x35*m*q_rd - _x37*_x39*m**2*q_rd**3
+        _d_D_next__2 = _d_rbar__2*_pd__16
+        _d_D_next__3 = _d_rbar__3*_pd__16
+        _d_D_next__4 = _d_rbar__4*_pd__16 + _x38*(-_x30 - _x36*((0.5)*_x29 + (0.5)*_x32*(2.0*l0 - 2.0*q_r)))
+        _d_D_next__5 = _d_rbar__5*_pd__16
+        _d_D_next__6 = _d_rbar__6*_pd__16
         # the shape Psi/W
-        for _j1064 in range(int(nq)):
-            _Psi = Psi[_j1064]
-            _d_Psi__0 = d_Psi__0[_j1064]
-            _d_Psi__1 = d_Psi__1[_j1064]
-            _d_Psi__2 = d_Psi__2[_j1064]
-            _d_Psi__3 = d_Psi__3[_j1064]
-            _d_Psi__4 = d_Psi__4[_j1064]
-            _d_Psi__5 = d_Psi__5[_j1064]
-            _d_Psi__6 = d_Psi__6[_j1064]
-            Shape[_j1064] = _Psi/_Wpass
-            d_Shape__0[_j1064] = -_Psi*_d_Wpass__0/_Wpass**2 + _d_Psi__0/_Wpass
-            d_Shape__1[_j1064] = -_Psi*_d_Wpass__1/_Wpass**2 + _d_Psi__1/_Wpass
-            d_Shape__2[_j1064] = -_Psi*_d_Wpass__2/_Wpass**2 + _d_Psi__2/_Wpass
-            d_Shape__3[_j1064] = -_Psi*_d_Wpass__3/_Wpass**2 + _d_Psi__3/_Wpass
-            d_Shape__4[_j1064] = -_Psi*_d_Wpass__4/_Wpass**2 + _d_Psi__4/_Wpass
-            d_Shape__5[_j1064] = -_Psi*_d_Wpass__5/_Wpass**2 + _d_Psi__5/_Wpass
-            d_Shape__6[_j1064] = -_Psi*_d_Wpass__6/_Wpass**2 + _d_Psi__6/_Wpass
+        for _j1046 in range(int(nq)):
+            _Psi = Psi[_j1046]
+            _d_Psi__0 = d_Psi__0[_j1046]
+            _d_Psi__1 = d_Psi__1[_j1046]
+            _d_Psi__2 = d_Psi__2[_j1046]
+            _d_Psi__3 = d_Psi__3[_j1046]
+            _d_Psi__4 = d_Psi__4[_j1046]
+            _d_Psi__5 = d_Psi__5[_j1046]
+            _d_Psi__6 = d_Psi__6[_j1046]
+            Shape[_j1046] = _Psi/_Wpass
+            d_Shape__0[_j1046] = -_Psi*_d_Wpass__0/_Wpass**2 + _d_Psi__0/_Wpass
+            d_Shape__1[_j1046] = -_Psi*_d_Wpass__1/_Wpass**2 + _d_Psi__1/_Wpass
+            d_Shape__2[_j1046] = -_Psi*_d_Wpass__2/_Wpass**2 + _d_Psi__2/_Wpass
+            d_Shape__3[_j1046] = -_Psi*_d_Wpass__3/_Wpass**2 + _d_Psi__3/_Wpass
+            d_Shape__4[_j1046] = -_Psi*_d_Wpass__4/_Wpass**2 + _d_Psi__4/_Wpass
+            d_Shape__5[_j1046] = -_Psi*_d_Wpass__5/_Wpass**2 + _d_Psi__5/_Wpass
+            d_Shape__6[_j1046] = -_Psi*_d_Wpass__6/_Wpass**2 + _d_Psi__6/_Wpass
         # next values
         _D__next = _D_next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_D__next - _D) <= tol*(l0))
-        for _j1066 in range(int(nq)):
-            _conv0 = _conv0 and abs(Q_next[_j1066] - Q[_j1066]) <= tol*(1.0)
-            Q[_j1066] = Q_next[_j1066]
-            _conv0 = (_conv0 and abs(P_next[_j1066] - P[_j1066]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+        for _j1048 in range(int(nq)):
+            _conv0 = _conv0 and abs(Q_next[_j1048] - Q[_j1048]) <= tol*(1.0)
+            Q[_j1048] = Q_next[_j1048]
+            _conv0 = (_conv0 and abs(P_next[_j1048] - P[_j1048]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
-            P[_j1066] = P_next[_j1066]
-            Psr[_j1066] = Shape[_j1066]
-            d_Q__0[_j1066] = d_Q_next__0[_j1066]
-            d_Q__1[_j1066] = d_Q_next__1[_j1066]
-            d_Q__2[_j1066] = d_Q_next__2[_j1066]
-            d_Q__3[_j1066] = d_Q_next__3[_j1066]
-            d_Q__4[_j1066] = d_Q_next__4[_j1066]
-            d_Q__5[_j1066] = d_Q_next__5[_j1066]
-            d_Q__6[_j1066] = d_Q_next__6[_j1066]
-            d_P__0[_j1066] = d_P_next__0[_j1066]
-            d_P__1[_j1066] = d_P_next__1[_j1066]
-            d_P__2[_j1066] = d_P_next__2[_j1066]
-            d_P__3[_j1066] = d_P_next__3[_j1066]
-            d_P__4[_j1066] = d_P_next__4[_j1066]
-            d_P__5[_j1066] = d_P_next__5[_j1066]
-            d_P__6[_j1066] = d_P_next__6[_j1066]
-            d_Psr__0[_j1066] = d_Shape__0[_j1066]
-            d_Psr__1[_j1066] = d_Shape__1[_j1066]
-            d_Psr__2[_j1066] = d_Shape__2[_j1066]
-            d_Psr__3[_j1066] = d_Shape__3[_j1066]
-            d_Psr__4[_j1066] = d_Shape__4[_j1066]
-            d_Psr__5[_j1066] = d_Shape__5[_j1066]
-            d_Psr__6[_j1066] = d_Shape__6[_j1066]
+            P[_j1048] = P_next[_j1048]
+            Psr[_j1048] = Shape[_j1048]
+            d_Q__0[_j1048] = d_Q_next__0[_j1048]
+            d_Q__1[_j1048] = d_Q_next__1[_j1048]
+            d_Q__2[_j1048] = d_Q_next__2[_j1048]
+            d_Q__3[_j1048] = d_Q_next__3[_j1048]
+            d_Q__4[_j1048] = d_Q_next__4[_j1048]
+            d_Q__5[_j1048] = d_Q_next__5[_j1048]
+            d_Q__6[_j1048] = d_Q_next__6[_j1048]
+            d_P__0[_j1048] = d_P_next__0[_j1048]
+            d_P__1[_j1048] = d_P_next__1[_j1048]
+            d_P__2[_j1048] = d_P_next__2[_j1048]
+            d_P__3[_j1048] = d_P_next__3[_j1048]
+            d_P__4[_j1048] = d_P_next__4[_j1048]
+            d_P__5[_j1048] = d_P_next__5[_j1048]
+            d_P__6[_j1048] = d_P_next__6[_j1048]
+            d_Psr__0[_j1048] = d_Shape__0[_j1048]
+            d_Psr__1[_j1048] = d_Shape__1[_j1048]
+            d_Psr__2[_j1048] = d_Shape__2[_j1048]
+            d_Psr__3[_j1048] = d_Shape__3[_j1048]
+            d_Psr__4[_j1048] = d_Shape__4[_j1048]
+            d_Psr__5[_j1048] = d_Shape__5[_j1048]
+            d_Psr__6[_j1048] = d_Shape__6[_j1048]
         _pkn0 = (_D__next, _d_D_next__0, _d_D_next__1, _d_D_next__2, _d_D_next__3, _d_D_next__4, _d_D_next__5,
             _d_D_next__6, )
         _pk0 = _pkn0
@@ -1112,54 +1064,54 @@ def schwind_compression_jvp7_65b25d(_a, out):
     _d_p_end__4 = 0.0
     _d_p_end__5 = 0.0
     _d_p_end__6 = 0.0
-    for _j1067 in range(int(nq)):
-        _t_end += w[_j1067]*ft[_j1067]
-        _d_t_end__0 += w[_j1067]*d_ft__0[_j1067]
-        _d_t_end__1 += w[_j1067]*d_ft__1[_j1067]
-        _d_t_end__2 += w[_j1067]*d_ft__2[_j1067]
-        _d_t_end__3 += w[_j1067]*d_ft__3[_j1067]
-        _d_t_end__4 += w[_j1067]*d_ft__4[_j1067]
-        _d_t_end__5 += w[_j1067]*d_ft__5[_j1067]
-        _d_t_end__6 += w[_j1067]*d_ft__6[_j1067]
-        _q_end += w[_j1067]*fq[_j1067]
-        _d_q_end__0 += w[_j1067]*d_fq__0[_j1067]
-        _d_q_end__1 += w[_j1067]*d_fq__1[_j1067]
-        _d_q_end__2 += w[_j1067]*d_fq__2[_j1067]
-        _d_q_end__3 += w[_j1067]*d_fq__3[_j1067]
-        _d_q_end__4 += w[_j1067]*d_fq__4[_j1067]
-        _d_q_end__5 += w[_j1067]*d_fq__5[_j1067]
-        _d_q_end__6 += w[_j1067]*d_fq__6[_j1067]
-        _p_end += w[_j1067]*fp[_j1067]
-        _d_p_end__0 += w[_j1067]*d_fp__0[_j1067]
-        _d_p_end__1 += w[_j1067]*d_fp__1[_j1067]
-        _d_p_end__2 += w[_j1067]*d_fp__2[_j1067]
-        _d_p_end__3 += w[_j1067]*d_fp__3[_j1067]
-        _d_p_end__4 += w[_j1067]*d_fp__4[_j1067]
-        _d_p_end__5 += w[_j1067]*d_fp__5[_j1067]
-        _d_p_end__6 += w[_j1067]*d_fp__6[_j1067]
+    for _j1049 in range(int(nq)):
+        _t_end += w[_j1049]*ft[_j1049]
+        _d_t_end__0 += w[_j1049]*d_ft__0[_j1049]
+        _d_t_end__1 += w[_j1049]*d_ft__1[_j1049]
+        _d_t_end__2 += w[_j1049]*d_ft__2[_j1049]
+        _d_t_end__3 += w[_j1049]*d_ft__3[_j1049]
+        _d_t_end__4 += w[_j1049]*d_ft__4[_j1049]
+        _d_t_end__5 += w[_j1049]*d_ft__5[_j1049]
+        _d_t_end__6 += w[_j1049]*d_ft__6[_j1049]
+        _q_end += w[_j1049]*fq[_j1049]
+        _d_q_end__0 += w[_j1049]*d_fq__0[_j1049]
+        _d_q_end__1 += w[_j1049]*d_fq__1[_j1049]
+        _d_q_end__2 += w[_j1049]*d_fq__2[_j1049]
+        _d_q_end__3 += w[_j1049]*d_fq__3[_j1049]
+        _d_q_end__4 += w[_j1049]*d_fq__4[_j1049]
+        _d_q_end__5 += w[_j1049]*d_fq__5[_j1049]
+        _d_q_end__6 += w[_j1049]*d_fq__6[_j1049]
+        _p_end += w[_j1049]*fp[_j1049]
+        _d_p_end__0 += w[_j1049]*d_fp__0[_j1049]
+        _d_p_end__1 += w[_j1049]*d_fp__1[_j1049]
+        _d_p_end__2 += w[_j1049]*d_fp__2[_j1049]
+        _d_p_end__3 += w[_j1049]*d_fp__3[_j1049]
+        _d_p_end__4 += w[_j1049]*d_fp__4[_j1049]
+        _d_p_end__5 += w[_j1049]*d_fp__5[_j1049]
+        _d_p_end__6 += w[_j1049]*d_fp__6[_j1049]
     # bottom state
     t_half = _t_end
     end_q_th = _q_end + q_th
     d_end_q_th__2 = _d_q_end__2 + 1.0
-    _x43 = -_D + q_r
-    end_q_r = _x43
+    _x40 = -_D + q_r
+    end_q_r = _x40
     d_end_q_r__0 = 1.0 - _d_D__0
-    _x44 = q_r**2
-    _x45 = _p_end + _x44*m*q_thd
-    _x46 = (1.0/m)
-    _x49 = (1.0/_x43)
-    _x47 = _x49**2
-    _x48 = _x46*_x47
-    end_q_thd = _x45*_x48
-    _pd__18 = _x48
-    _pd__19 = -2.0*_x45*_x46*_x49**3
-    d_end_q_thd__0 = _d_p_end__0*_pd__18 + _pd__19*d_end_q_r__0 + 2.0*_x47*q_r*q_thd
-    d_end_q_thd__1 = -_d_D__1*_pd__19 + _d_p_end__1*_pd__18
-    d_end_q_thd__2 = -_d_D__2*_pd__19 + _d_p_end__2*_pd__18
-    d_end_q_thd__3 = -_d_D__3*_pd__19 + _d_p_end__3*_pd__18 + _x44*_x47
-    d_end_q_thd__4 = -_d_D__4*_pd__19 + _d_p_end__4*_pd__18
-    d_end_q_thd__5 = -_d_D__5*_pd__19 + _d_p_end__5*_pd__18
-    d_end_q_thd__6 = -_d_D__6*_pd__19 + _d_p_end__6*_pd__18
+    _x41 = q_r**2
+    _x42 = _p_end + _x41*m*q_thd
+    _x43 = (1.0/m)
+    _x46 = (1.0/_x40)
+    _x44 = _x46**2
+    _x45 = _x43*_x44
+    end_q_thd = _x42*_x45
+    _pd__17 = _x45
+    _pd__18 = -2.0*_x42*_x43*_x46**3
+    d_end_q_thd__0 = _d_p_end__0*_pd__17 + _pd__18*d_end_q_r__0 + 2.0*_x44*q_r*q_thd
+    d_end_q_thd__1 = -_d_D__1*_pd__18 + _d_p_end__1*_pd__17
+    d_end_q_thd__2 = -_d_D__2*_pd__18 + _d_p_end__2*_pd__17
+    d_end_q_thd__3 = -_d_D__3*_pd__18 + _d_p_end__3*_pd__17 + _x41*_x44
+    d_end_q_thd__4 = -_d_D__4*_pd__18 + _d_p_end__4*_pd__17
+    d_end_q_thd__5 = -_d_D__5*_pd__18 + _d_p_end__5*_pd__17
+    d_end_q_thd__6 = -_d_D__6*_pd__18 + _d_p_end__6*_pd__17
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
@@ -1215,7 +1167,7 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 519
+    # Total ops: 478
     # inputs: finite and inside their domains
     if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, guess_q_th, guess_q_thd, nodes,
             iterations, tol, liftoff,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
@@ -1231,18 +1183,17 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
         d_Psr0__guess_q_thd, Q, P, Psr, d_Q__q_r, d_Q__q_th, d_Q__q_thd, d_Q__k_d, d_Q__c, d_Q__guess_q_th,
         d_Q__guess_q_thd, d_P__q_r, d_P__q_th, d_P__q_thd, d_P__k_d, d_P__c, d_P__guess_q_th,
         d_P__guess_q_thd, d_Psr__q_r, d_Psr__q_th, d_Psr__q_thd, d_Psr__k_d, d_Psr__c, d_Psr__guess_q_th,
-        d_Psr__guess_q_thd, sigma, Fc, sinQ, d_sigma__q_r, d_sigma__q_th, d_sigma__q_thd, d_sigma__k_d,
-        d_sigma__c, d_sigma__guess_q_th, d_sigma__guess_q_thd, d_Fc__q_r, d_Fc__q_th, d_Fc__q_thd, d_Fc__k_d,
-        d_Fc__c, d_Fc__guess_q_th, d_Fc__guess_q_thd, d_sinQ__q_r, d_sinQ__q_th, d_sinQ__q_thd, d_sinQ__k_d,
-        d_sinQ__c, d_sinQ__guess_q_th, d_sinQ__guess_q_thd, F, d_F__q_r, d_F__q_th, d_F__q_thd, d_F__k_d,
-        d_F__c, d_F__guess_q_th, d_F__guess_q_thd, ft, fq, fp, Psi, d_ft__q_r, d_ft__q_th, d_ft__q_thd,
-        d_ft__k_d, d_ft__c, d_ft__guess_q_th, d_ft__guess_q_thd, d_fq__q_r, d_fq__q_th, d_fq__q_thd,
-        d_fq__k_d, d_fq__c, d_fq__guess_q_th, d_fq__guess_q_thd, d_fp__q_r, d_fp__q_th, d_fp__q_thd,
-        d_fp__k_d, d_fp__c, d_fp__guess_q_th, d_fp__guess_q_thd, d_Psi__q_r, d_Psi__q_th, d_Psi__q_thd,
-        d_Psi__k_d, d_Psi__c, d_Psi__guess_q_th, d_Psi__guess_q_thd, Q_next, P_next, d_Q_next__q_r,
-        d_Q_next__q_th, d_Q_next__q_thd, d_Q_next__k_d, d_Q_next__c, d_Q_next__guess_q_th,
+        d_Psr__guess_q_thd, sigma, F, sinQ, d_sigma__q_r, d_sigma__q_th, d_sigma__q_thd, d_sigma__k_d,
+        d_sigma__c, d_sigma__guess_q_th, d_sigma__guess_q_thd, d_F__q_r, d_F__q_th, d_F__q_thd, d_F__k_d,
+        d_F__c, d_F__guess_q_th, d_F__guess_q_thd, d_sinQ__q_r, d_sinQ__q_th, d_sinQ__q_thd, d_sinQ__k_d,
+        d_sinQ__c, d_sinQ__guess_q_th, d_sinQ__guess_q_thd, ft, fq, fp, Psi, d_ft__q_r, d_ft__q_th,
+        d_ft__q_thd, d_ft__k_d, d_ft__c, d_ft__guess_q_th, d_ft__guess_q_thd, d_fq__q_r, d_fq__q_th,
+        d_fq__q_thd, d_fq__k_d, d_fq__c, d_fq__guess_q_th, d_fq__guess_q_thd, d_fp__q_r, d_fp__q_th,
+        d_fp__q_thd, d_fp__k_d, d_fp__c, d_fp__guess_q_th, d_fp__guess_q_thd, d_Psi__q_r, d_Psi__q_th,
+        d_Psi__q_thd, d_Psi__k_d, d_Psi__c, d_Psi__guess_q_th, d_Psi__guess_q_thd, Q_next, P_next,
+        d_Q_next__q_r, d_Q_next__q_th, d_Q_next__q_thd, d_Q_next__k_d, d_Q_next__c, d_Q_next__guess_q_th,
         d_Q_next__guess_q_thd, d_P_next__q_r, d_P_next__q_th, d_P_next__q_thd, d_P_next__k_d, d_P_next__c,
-        d_P_next__guess_q_th, d_P_next__guess_q_thd,) = (node_arrays(stack(1536), 128, 12))
+        d_P_next__guess_q_th, d_P_next__guess_q_thd,) = (node_arrays(stack(1440), 120, 12))
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)
@@ -1276,124 +1227,49 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
         d_Psr0__q_th[_j1002] = (0.5)*g_s*m*math.sin(q_th)
         d_Psr0__q_thd[_j1002] = m*q_r*q_thd
         d_Psr0__k_d[_j1002] = (0.5)*l0 - 0.5*q_r
-    # d_Q0__q_r: zero
+    # tangents that are 0
     for _j1004 in range(int(nq)):
         d_Q0__q_r[_j1004] = 0.0
-    # d_Q0__q_thd: zero
-    for _j1006 in range(int(nq)):
-        d_Q0__q_thd[_j1006] = 0.0
-    # d_Q0__k_d: zero
-    for _j1008 in range(int(nq)):
-        d_Q0__k_d[_j1008] = 0.0
-    # d_Q0__c: zero
-    for _j1010 in range(int(nq)):
-        d_Q0__c[_j1010] = 0.0
-    # d_Q0__guess_q_thd: zero
-    for _j1012 in range(int(nq)):
-        d_Q0__guess_q_thd[_j1012] = 0.0
-    # d_P0__q_th: zero
-    for _j1014 in range(int(nq)):
-        d_P0__q_th[_j1014] = 0.0
-    # d_P0__k_d: zero
-    for _j1016 in range(int(nq)):
-        d_P0__k_d[_j1016] = 0.0
-    # d_P0__c: zero
-    for _j1018 in range(int(nq)):
-        d_P0__c[_j1018] = 0.0
-    # d_P0__guess_q_th: zero
-    for _j1020 in range(int(nq)):
-        d_P0__guess_q_th[_j1020] = 0.0
-    # d_Psr0__c: zero
-    for _j1022 in range(int(nq)):
-        d_Psr0__c[_j1022] = 0.0
-    # d_Psr0__guess_q_th: zero
-    for _j1024 in range(int(nq)):
-        d_Psr0__guess_q_th[_j1024] = 0.0
-    # d_Psr0__guess_q_thd: zero
-    for _j1026 in range(int(nq)):
-        d_Psr0__guess_q_thd[_j1026] = 0.0
+        d_Q0__q_thd[_j1004] = 0.0
+        d_Q0__k_d[_j1004] = 0.0
+        d_Q0__c[_j1004] = 0.0
+        d_Q0__guess_q_thd[_j1004] = 0.0
+        d_P0__q_th[_j1004] = 0.0
+        d_P0__k_d[_j1004] = 0.0
+        d_P0__c[_j1004] = 0.0
+        d_P0__guess_q_th[_j1004] = 0.0
+        d_Psr0__c[_j1004] = 0.0
+        d_Psr0__guess_q_th[_j1004] = 0.0
+        d_Psr0__guess_q_thd[_j1004] = 0.0
     # Picard passes on the node values (collocation in u)
-    for _j1044 in range(int(nq)):
-        Q[_j1044] = Q0[_j1044]
-        P[_j1044] = P0[_j1044]
-        Psr[_j1044] = Psr0[_j1044]
-        d_Q__q_r[_j1044] = d_Q0__q_r[_j1044]
-        d_Q__q_th[_j1044] = d_Q0__q_th[_j1044]
-        d_Q__q_thd[_j1044] = d_Q0__q_thd[_j1044]
-        d_Q__k_d[_j1044] = d_Q0__k_d[_j1044]
-        d_Q__c[_j1044] = d_Q0__c[_j1044]
-        d_Q__guess_q_th[_j1044] = d_Q0__guess_q_th[_j1044]
-        d_Q__guess_q_thd[_j1044] = d_Q0__guess_q_thd[_j1044]
-        d_P__q_r[_j1044] = d_P0__q_r[_j1044]
-        d_P__q_th[_j1044] = d_P0__q_th[_j1044]
-        d_P__q_thd[_j1044] = d_P0__q_thd[_j1044]
-        d_P__k_d[_j1044] = d_P0__k_d[_j1044]
-        d_P__c[_j1044] = d_P0__c[_j1044]
-        d_P__guess_q_th[_j1044] = d_P0__guess_q_th[_j1044]
-        d_P__guess_q_thd[_j1044] = d_P0__guess_q_thd[_j1044]
-        d_Psr__q_r[_j1044] = d_Psr0__q_r[_j1044]
-        d_Psr__q_th[_j1044] = d_Psr0__q_th[_j1044]
-        d_Psr__q_thd[_j1044] = d_Psr0__q_thd[_j1044]
-        d_Psr__k_d[_j1044] = d_Psr0__k_d[_j1044]
-        d_Psr__c[_j1044] = d_Psr0__c[_j1044]
-        d_Psr__guess_q_th[_j1044] = d_Psr0__guess_q_th[_j1044]
-        d_Psr__guess_q_thd[_j1044] = d_Psr0__guess_q_thd[_j1044]
+    for _j1020 in range(int(nq)):
+        Q[_j1020] = Q0[_j1020]
+        P[_j1020] = P0[_j1020]
+        Psr[_j1020] = Psr0[_j1020]
+        d_Q__q_r[_j1020] = d_Q0__q_r[_j1020]
+        d_Q__q_th[_j1020] = d_Q0__q_th[_j1020]
+        d_Q__q_thd[_j1020] = d_Q0__q_thd[_j1020]
+        d_Q__k_d[_j1020] = d_Q0__k_d[_j1020]
+        d_Q__c[_j1020] = d_Q0__c[_j1020]
+        d_Q__guess_q_th[_j1020] = d_Q0__guess_q_th[_j1020]
+        d_Q__guess_q_thd[_j1020] = d_Q0__guess_q_thd[_j1020]
+        d_P__q_r[_j1020] = d_P0__q_r[_j1020]
+        d_P__q_th[_j1020] = d_P0__q_th[_j1020]
+        d_P__q_thd[_j1020] = d_P0__q_thd[_j1020]
+        d_P__k_d[_j1020] = d_P0__k_d[_j1020]
+        d_P__c[_j1020] = d_P0__c[_j1020]
+        d_P__guess_q_th[_j1020] = d_P0__guess_q_th[_j1020]
+        d_P__guess_q_thd[_j1020] = d_P0__guess_q_thd[_j1020]
+        d_Psr__q_r[_j1020] = d_Psr0__q_r[_j1020]
+        d_Psr__q_th[_j1020] = d_Psr0__q_th[_j1020]
+        d_Psr__q_thd[_j1020] = d_Psr0__q_thd[_j1020]
+        d_Psr__k_d[_j1020] = d_Psr0__k_d[_j1020]
+        d_Psr__c[_j1020] = d_Psr0__c[_j1020]
+        d_Psr__guess_q_th[_j1020] = d_Psr0__guess_q_th[_j1020]
+        d_Psr__guess_q_thd[_j1020] = d_Psr0__guess_q_thd[_j1020]
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = ((((2.0*k_d*l0 - 2.0*k_d*q_r)**2/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**2) if (liftoff
-        == 0.0) and (2.0*c*math.sqrt(-q_r + q_r_lo)*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) - k_d*(l0 - q_r_lo) > 0.0) else (-q_r + q_r_lo)),
-        ((-4.0*k_d*(2.0*k_d*l0 - 2.0*k_d*q_r)/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**2 + (2.0*k_d*l0
-        - 2.0*k_d*q_r)**2*(-4.0*c*(-0.25*k_d + (0.25)*m*q_thd**2)/(math.sqrt(m)*math.sqrt(-0.5*g_s*m*math.cos
-        (q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)) - 2.0*(2.0*c**2*(-0.5*k_d
-        + (0.5)*m*q_thd**2)/m - 2.0*k_d**2)/math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0
-        - k_d*q_r)))/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**3) if (liftoff == 0.0)
-        and (2.0*c*math.sqrt(-q_r + q_r_lo)*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) - k_d*(l0 - q_r_lo) > 0.0) else (-1.0)), (((2.0*k_d*l0
-        - 2.0*k_d*q_r)**2*(-2.0*c**2*g_s*math.sin(q_th)/math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r))
-        - c*g_s*math.sqrt(m)*math.sin(q_th)/math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2))/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**3) if (liftoff == 0.0)
-        and (2.0*c*math.sqrt(-q_r + q_r_lo)*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) - k_d*(l0 - q_r_lo) > 0.0) else (0.0)), (((2.0*k_d*l0
-        - 2.0*k_d*q_r)**2*(-4.0*c**2*q_r*q_thd/math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r))
-        - 2.0*c*math.sqrt(m)*q_r*q_thd/math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2))/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**3) if (liftoff == 0.0)
-        and (2.0*c*math.sqrt(-q_r + q_r_lo)*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) - k_d*(l0 - q_r_lo) > 0.0) else (0.0)), (((4.0*l0
-        - 4.0*q_r)*(2.0*k_d*l0 - 2.0*k_d*q_r)/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**2 + (2.0*k_d*l0
-        - 2.0*k_d*q_r)**2*(-4.0*c*((0.25)*l0 - 0.25*q_r)/(math.sqrt(m)*math.sqrt(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)) - 2.0*(2.0*c**2*((0.5)*l0 - 0.5*q_r)/m
-        + 2.0*k_d*l0 - 2.0*k_d*q_r + 2.0*k_d*(l0 - q_r))/math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0
-        - k_d*q_r)))/(2.0*c*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0
-        - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r)))**3) if (liftoff == 0.0)
-        and (2.0*c*math.sqrt(-q_r + q_r_lo)*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) - k_d*(l0 - q_r_lo) > 0.0) else (0.0)), (((2.0*k_d*l0
-        - 2.0*k_d*q_r)**2*(-8.0*c*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/(m*math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/m + 4.0*k_d*(k_d*l0 - k_d*q_r))) - 4.0*math.sqrt(-0.5*g_s*m*math.cos(q_th)
-        + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m))/(2.0*c*math.sqrt(-0.5*g_s*m*math.
-        cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/math.sqrt(m)
-        + math.sqrt(4.0*c**2*(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2)/m
-        + 4.0*k_d*(k_d*l0 - k_d*q_r)))**3) if (liftoff == 0.0) and (2.0*c*math.sqrt(-q_r
-        + q_r_lo)*math.sqrt(-0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r
-        + (0.5)*m*q_r*q_thd**2)/math.sqrt(m) - k_d*(l0 - q_r_lo) > 0.0) else (0.0)), 0.0, 0.0, )
+    _pki0 = (-q_r + q_r_lo, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
     _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
@@ -1403,25 +1279,33 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
             ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return fail(out, STATUS_NOT_CONVERGED)
-        # node values of the pass: sigma, F_r (29), sin Q
-        for _j1028 in range(int(nq)):
-            _Qj = Q[_j1028]
-            _Pj = P[_j1028]
-            _u = u[_j1028]
-            _d_Qj__q_r = d_Q__q_r[_j1028]
-            _d_Qj__q_th = d_Q__q_th[_j1028]
-            _d_Qj__q_thd = d_Q__q_thd[_j1028]
-            _d_Qj__k_d = d_Q__k_d[_j1028]
-            _d_Qj__c = d_Q__c[_j1028]
-            _d_Qj__guess_q_th = d_Q__guess_q_th[_j1028]
-            _d_Qj__guess_q_thd = d_Q__guess_q_thd[_j1028]
-            _d_Pj__q_r = d_P__q_r[_j1028]
-            _d_Pj__q_th = d_P__q_th[_j1028]
-            _d_Pj__q_thd = d_P__q_thd[_j1028]
-            _d_Pj__k_d = d_P__k_d[_j1028]
-            _d_Pj__c = d_P__c[_j1028]
-            _d_Pj__guess_q_th = d_P__guess_q_th[_j1028]
-            _d_Pj__guess_q_thd = d_P__guess_q_thd[_j1028]
+        # node values of the pass: sigma, F_r (29) and the damper's force, sin Q
+        for _j1006 in range(int(nq)):
+            _Qj = Q[_j1006]
+            _Pj = P[_j1006]
+            _u = u[_j1006]
+            _Psr = Psr[_j1006]
+            _d_Qj__q_r = d_Q__q_r[_j1006]
+            _d_Qj__q_th = d_Q__q_th[_j1006]
+            _d_Qj__q_thd = d_Q__q_thd[_j1006]
+            _d_Qj__k_d = d_Q__k_d[_j1006]
+            _d_Qj__c = d_Q__c[_j1006]
+            _d_Qj__guess_q_th = d_Q__guess_q_th[_j1006]
+            _d_Qj__guess_q_thd = d_Q__guess_q_thd[_j1006]
+            _d_Pj__q_r = d_P__q_r[_j1006]
+            _d_Pj__q_th = d_P__q_th[_j1006]
+            _d_Pj__q_thd = d_P__q_thd[_j1006]
+            _d_Pj__k_d = d_P__k_d[_j1006]
+            _d_Pj__c = d_P__c[_j1006]
+            _d_Pj__guess_q_th = d_P__guess_q_th[_j1006]
+            _d_Pj__guess_q_thd = d_P__guess_q_thd[_j1006]
+            _d_Psr__q_r = d_Psr__q_r[_j1006]
+            _d_Psr__q_th = d_Psr__q_th[_j1006]
+            _d_Psr__q_thd = d_Psr__q_thd[_j1006]
+            _d_Psr__k_d = d_Psr__k_d[_j1006]
+            _d_Psr__c = d_Psr__c[_j1006]
+            _d_Psr__guess_q_th = d_Psr__guess_q_th[_j1006]
+            _d_Psr__guess_q_thd = d_Psr__guess_q_thd[_j1006]
             _x0 = _u**2
             _x1 = _D*_x0
             _x2 = _x1 + q_r
@@ -1463,97 +1347,67 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
             _d_sinQ__c = _d_Qj__c*_pd__4
             _d_sinQ__guess_q_th = _d_Qj__guess_q_th*_pd__4
             _d_sinQ__guess_q_thd = _d_Qj__guess_q_thd*_pd__4
-            sigma[_j1028] = _sigma
-            Fc[_j1028] = _F
-            sinQ[_j1028] = _sinQ
-            d_sigma__q_r[_j1028] = _d_sigma__q_r
-            d_sigma__q_th[_j1028] = _d_sigma__q_th
-            d_sigma__q_thd[_j1028] = _d_sigma__q_thd
-            d_sigma__k_d[_j1028] = _d_sigma__k_d
-            d_sigma__c[_j1028] = _d_sigma__c
-            d_sigma__guess_q_th[_j1028] = _d_sigma__guess_q_th
-            d_sigma__guess_q_thd[_j1028] = _d_sigma__guess_q_thd
-            d_Fc__q_r[_j1028] = _d_F__q_r
-            d_Fc__q_th[_j1028] = _d_F__q_th
-            d_Fc__q_thd[_j1028] = _d_F__q_thd
-            d_Fc__k_d[_j1028] = _d_F__k_d
-            d_Fc__c[_j1028] = _d_F__c
-            d_Fc__guess_q_th[_j1028] = _d_F__guess_q_th
-            d_Fc__guess_q_thd[_j1028] = _d_F__guess_q_thd
-            d_sinQ__q_r[_j1028] = _d_sinQ__q_r
-            d_sinQ__q_th[_j1028] = _d_sinQ__q_th
-            d_sinQ__q_thd[_j1028] = _d_sinQ__q_thd
-            d_sinQ__k_d[_j1028] = _d_sinQ__k_d
-            d_sinQ__c[_j1028] = _d_sinQ__c
-            d_sinQ__guess_q_th[_j1028] = _d_sinQ__guess_q_th
-            d_sinQ__guess_q_thd[_j1028] = _d_sinQ__guess_q_thd
-        # F_r with the damper's force at the previous pass's Psi (0 at c = 0)
-        for _j1030 in range(int(nq)):
-            _Fc = Fc[_j1030]
-            _u = u[_j1030]
-            _Psr = Psr[_j1030]
-            _d_Fc__q_r = d_Fc__q_r[_j1030]
-            _d_Fc__q_th = d_Fc__q_th[_j1030]
-            _d_Fc__q_thd = d_Fc__q_thd[_j1030]
-            _d_Fc__k_d = d_Fc__k_d[_j1030]
-            _d_Fc__c = d_Fc__c[_j1030]
-            _d_Fc__guess_q_th = d_Fc__guess_q_th[_j1030]
-            _d_Fc__guess_q_thd = d_Fc__guess_q_thd[_j1030]
-            _d_Psr__q_r = d_Psr__q_r[_j1030]
-            _d_Psr__q_th = d_Psr__q_th[_j1030]
-            _d_Psr__q_thd = d_Psr__q_thd[_j1030]
-            _d_Psr__k_d = d_Psr__k_d[_j1030]
-            _d_Psr__c = d_Psr__c[_j1030]
-            _d_Psr__guess_q_th = d_Psr__guess_q_th[_j1030]
-            _d_Psr__guess_q_thd = d_Psr__guess_q_thd[_j1030]
-            _x10 = _u*math.sqrt(_D*_Psr)/math.sqrt(m)
-            _x11 = 2.0*_x10
-            _Fd = -_x11*c
-            _x12 = _x10*c
-            _pd__5 = -_x12/_D
-            _pd__6 = -_x12/_Psr
-            _d_Fd__q_r = _d_D__q_r*_pd__5 + _d_Psr__q_r*_pd__6
-            _d_Fd__q_th = _d_D__q_th*_pd__5 + _d_Psr__q_th*_pd__6
-            _d_Fd__q_thd = _d_D__q_thd*_pd__5 + _d_Psr__q_thd*_pd__6
-            _d_Fd__k_d = _d_D__k_d*_pd__5 + _d_Psr__k_d*_pd__6
-            _d_Fd__c = _d_D__c*_pd__5 + _d_Psr__c*_pd__6 - _x11
-            _d_Fd__guess_q_th = _d_D__guess_q_th*_pd__5 + _d_Psr__guess_q_th*_pd__6
-            _d_Fd__guess_q_thd = _d_D__guess_q_thd*_pd__5 + _d_Psr__guess_q_thd*_pd__6
-            F[_j1030] = _Fc + _Fd
-            d_F__q_r[_j1030] = _d_Fc__q_r + _d_Fd__q_r
-            d_F__q_th[_j1030] = _d_Fc__q_th + _d_Fd__q_th
-            d_F__q_thd[_j1030] = _d_Fc__q_thd + _d_Fd__q_thd
-            d_F__k_d[_j1030] = _d_Fc__k_d + _d_Fd__k_d
-            d_F__c[_j1030] = _d_Fc__c + _d_Fd__c
-            d_F__guess_q_th[_j1030] = _d_Fc__guess_q_th + _d_Fd__guess_q_th
-            d_F__guess_q_thd[_j1030] = _d_Fc__guess_q_thd + _d_Fd__guess_q_thd
+            sigma[_j1006] = _sigma
+            F[_j1006] = _F - 2.0*_u*c*math.sqrt(_D*_Psr)/math.sqrt(m)
+            sinQ[_j1006] = _sinQ
+            d_sigma__q_r[_j1006] = _d_sigma__q_r
+            d_sigma__q_th[_j1006] = _d_sigma__q_th
+            d_sigma__q_thd[_j1006] = _d_sigma__q_thd
+            d_sigma__k_d[_j1006] = _d_sigma__k_d
+            d_sigma__c[_j1006] = _d_sigma__c
+            d_sigma__guess_q_th[_j1006] = _d_sigma__guess_q_th
+            d_sigma__guess_q_thd[_j1006] = _d_sigma__guess_q_thd
+            d_F__q_r[_j1006] = (_d_F__q_r - _d_Psr__q_r*_u*c*math.sqrt(_D*_Psr)/(_Psr*math.sqrt(m))
+                - _d_D__q_r*_u*c*math.sqrt(_D*_Psr)/(_D*math.sqrt(m)))
+            d_F__q_th[_j1006] = (_d_F__q_th - _d_Psr__q_th*_u*c*math.sqrt(_D*_Psr)/(_Psr*math.sqrt(m))
+                - _d_D__q_th*_u*c*math.sqrt(_D*_Psr)/(_D*math.sqrt(m)))
+            d_F__q_thd[_j1006] = (_d_F__q_thd - _d_Psr__q_thd*_u*c*math.sqrt(_D*_Psr)/(_Psr*math.sqrt(m))
+                - _d_D__q_thd*_u*c*math.sqrt(_D*_Psr)/(_D*math.sqrt(m)))
+            d_F__k_d[_j1006] = (_d_F__k_d - _d_Psr__k_d*_u*c*math.sqrt(_D*_Psr)/(_Psr*math.sqrt(m))
+                - _d_D__k_d*_u*c*math.sqrt(_D*_Psr)/(_D*math.sqrt(m)))
+            d_F__c[_j1006] = (_d_F__c - 2.0*_u*math.sqrt(_D*_Psr)/math.sqrt(m)
+                - _d_Psr__c*_u*c*math.sqrt(_D*_Psr)/(_Psr*math.sqrt(m))
+                - _d_D__c*_u*c*math.sqrt(_D*_Psr)/(_D*math.sqrt(m)))
+            d_F__guess_q_th[_j1006] = (_d_F__guess_q_th
+                - _d_Psr__guess_q_th*_u*c*math.sqrt(_D*_Psr)/(_Psr*math.sqrt(m))
+                - _d_D__guess_q_th*_u*c*math.sqrt(_D*_Psr)/(_D*math.sqrt(m)))
+            d_F__guess_q_thd[_j1006] = (_d_F__guess_q_thd
+                - _d_Psr__guess_q_thd*_u*c*math.sqrt(_D*_Psr)/(_Psr*math.sqrt(m))
+                - _d_D__guess_q_thd*_u*c*math.sqrt(_D*_Psr)/(_D*math.sqrt(m)))
+            d_sinQ__q_r[_j1006] = _d_sinQ__q_r
+            d_sinQ__q_th[_j1006] = _d_sinQ__q_th
+            d_sinQ__q_thd[_j1006] = _d_sinQ__q_thd
+            d_sinQ__k_d[_j1006] = _d_sinQ__k_d
+            d_sinQ__c[_j1006] = _d_sinQ__c
+            d_sinQ__guess_q_th[_j1006] = _d_sinQ__guess_q_th
+            d_sinQ__guess_q_thd[_j1006] = _d_sinQ__guess_q_thd
         # Psi and the u-rates of (30)-(32) at the nodes
-        for _j1032 in range(int(nq)):
-            _Pj = P[_j1032]
-            _u = u[_j1032]
-            _sigma = sigma[_j1032]
-            _sinQ = sinQ[_j1032]
-            _d_Pj__q_r = d_P__q_r[_j1032]
-            _d_Pj__q_th = d_P__q_th[_j1032]
-            _d_Pj__q_thd = d_P__q_thd[_j1032]
-            _d_Pj__k_d = d_P__k_d[_j1032]
-            _d_Pj__c = d_P__c[_j1032]
-            _d_Pj__guess_q_th = d_P__guess_q_th[_j1032]
-            _d_Pj__guess_q_thd = d_P__guess_q_thd[_j1032]
-            _d_sigma__q_r = d_sigma__q_r[_j1032]
-            _d_sigma__q_th = d_sigma__q_th[_j1032]
-            _d_sigma__q_thd = d_sigma__q_thd[_j1032]
-            _d_sigma__k_d = d_sigma__k_d[_j1032]
-            _d_sigma__c = d_sigma__c[_j1032]
-            _d_sigma__guess_q_th = d_sigma__guess_q_th[_j1032]
-            _d_sigma__guess_q_thd = d_sigma__guess_q_thd[_j1032]
-            _d_sinQ__q_r = d_sinQ__q_r[_j1032]
-            _d_sinQ__q_th = d_sinQ__q_th[_j1032]
-            _d_sinQ__q_thd = d_sinQ__q_thd[_j1032]
-            _d_sinQ__k_d = d_sinQ__k_d[_j1032]
-            _d_sinQ__c = d_sinQ__c[_j1032]
-            _d_sinQ__guess_q_th = d_sinQ__guess_q_th[_j1032]
-            _d_sinQ__guess_q_thd = d_sinQ__guess_q_thd[_j1032]
+        for _j1008 in range(int(nq)):
+            _Pj = P[_j1008]
+            _u = u[_j1008]
+            _sigma = sigma[_j1008]
+            _sinQ = sinQ[_j1008]
+            _d_Pj__q_r = d_P__q_r[_j1008]
+            _d_Pj__q_th = d_P__q_th[_j1008]
+            _d_Pj__q_thd = d_P__q_thd[_j1008]
+            _d_Pj__k_d = d_P__k_d[_j1008]
+            _d_Pj__c = d_P__c[_j1008]
+            _d_Pj__guess_q_th = d_P__guess_q_th[_j1008]
+            _d_Pj__guess_q_thd = d_P__guess_q_thd[_j1008]
+            _d_sigma__q_r = d_sigma__q_r[_j1008]
+            _d_sigma__q_th = d_sigma__q_th[_j1008]
+            _d_sigma__q_thd = d_sigma__q_thd[_j1008]
+            _d_sigma__k_d = d_sigma__k_d[_j1008]
+            _d_sigma__c = d_sigma__c[_j1008]
+            _d_sigma__guess_q_th = d_sigma__guess_q_th[_j1008]
+            _d_sigma__guess_q_thd = d_sigma__guess_q_thd[_j1008]
+            _d_sinQ__q_r = d_sinQ__q_r[_j1008]
+            _d_sinQ__q_th = d_sinQ__q_th[_j1008]
+            _d_sinQ__q_thd = d_sinQ__q_thd[_j1008]
+            _d_sinQ__k_d = d_sinQ__k_d[_j1008]
+            _d_sinQ__c = d_sinQ__c[_j1008]
+            _d_sinQ__guess_q_th = d_sinQ__guess_q_th[_j1008]
+            _d_sinQ__guess_q_thd = d_sinQ__guess_q_thd[_j1008]
             _S1F = 0.0
             _d_S1F__q_r = 0.0
             _d_S1F__q_th = 0.0
@@ -1562,122 +1416,122 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
             _d_S1F__c = 0.0
             _d_S1F__guess_q_th = 0.0
             _d_S1F__guess_q_thd = 0.0
-            for _j1033 in range(int(nq)):
-                _S1F += S1[_j1032, _j1033]*F[_j1033]
-                _d_S1F__q_r += S1[_j1032, _j1033]*d_F__q_r[_j1033]
-                _d_S1F__q_th += S1[_j1032, _j1033]*d_F__q_th[_j1033]
-                _d_S1F__q_thd += S1[_j1032, _j1033]*d_F__q_thd[_j1033]
-                _d_S1F__k_d += S1[_j1032, _j1033]*d_F__k_d[_j1033]
-                _d_S1F__c += S1[_j1032, _j1033]*d_F__c[_j1033]
-                _d_S1F__guess_q_th += S1[_j1032, _j1033]*d_F__guess_q_th[_j1033]
-                _d_S1F__guess_q_thd += S1[_j1032, _j1033]*d_F__guess_q_thd[_j1033]
-            _x13 = _u**-2
-            _x14 = _S1F*_x13
-            _Psi = _x14
-            _pd__7 = _x13
-            _d_Psi__q_r = _d_S1F__q_r*_pd__7
-            _d_Psi__q_th = _d_S1F__q_th*_pd__7
-            _d_Psi__q_thd = _d_S1F__q_thd*_pd__7
-            _d_Psi__k_d = _d_S1F__k_d*_pd__7
-            _d_Psi__c = _d_S1F__c*_pd__7
-            _d_Psi__guess_q_th = _d_S1F__guess_q_th*_pd__7
-            _d_Psi__guess_q_thd = _d_S1F__guess_q_thd*_pd__7
-            _x15 = math.sqrt(_D)
-            _x16 = math.sqrt(m)
-            _x17 = (1.0/math.sqrt(_x14))
-            _x18 = _x16*_x17
-            _ft = _x15*_x18
-            _x19 = (0.5)/_x15
-            _pd__8 = _x18*_x19
-            _x20 = (0.5)*_x15/(_x14*math.sqrt(_x14))
-            _pd__9 = -_x16*_x20
-            _d_ft__q_r = _d_D__q_r*_pd__8 + _d_Psi__q_r*_pd__9
-            _d_ft__q_th = _d_D__q_th*_pd__8 + _d_Psi__q_th*_pd__9
-            _d_ft__q_thd = _d_D__q_thd*_pd__8 + _d_Psi__q_thd*_pd__9
-            _d_ft__k_d = _d_D__k_d*_pd__8 + _d_Psi__k_d*_pd__9
-            _d_ft__c = _d_D__c*_pd__8 + _d_Psi__c*_pd__9
-            _d_ft__guess_q_th = _d_D__guess_q_th*_pd__8 + _d_Psi__guess_q_th*_pd__9
-            _d_ft__guess_q_thd = _d_D__guess_q_thd*_pd__8 + _d_Psi__guess_q_thd*_pd__9
-            _x21 = _x15*_x17
-            _x22 = (1.0/_x16)
-            _x31 = (1.0/_sigma)
-            _x23 = _x22*_x31**2
-            _x24 = _x21*_x23
-            _fq = _Pj*_x24
-            _x25 = _Pj*_x23
-            _x26 = _x17*_x19
-            _pd__10 = _x25*_x26
-            _pd__11 = _x24
-            _pd__12 = -_x20*_x25
-            _pd__13 = -2.0*_Pj*_x21*_x22*_x31**3
-            _d_fq__q_r = _d_D__q_r*_pd__10 + _d_Pj__q_r*_pd__11 + _d_Psi__q_r*_pd__12 + _d_sigma__q_r*_pd__13
-            _d_fq__q_th = (_d_D__q_th*_pd__10 + _d_Pj__q_th*_pd__11 + _d_Psi__q_th*_pd__12
-                + _d_sigma__q_th*_pd__13)
-            _d_fq__q_thd = (_d_D__q_thd*_pd__10 + _d_Pj__q_thd*_pd__11 + _d_Psi__q_thd*_pd__12
-                + _d_sigma__q_thd*_pd__13)
-            _d_fq__k_d = _d_D__k_d*_pd__10 + _d_Pj__k_d*_pd__11 + _d_Psi__k_d*_pd__12 + _d_sigma__k_d*_pd__13
-            _d_fq__c = _d_D__c*_pd__10 + _d_Pj__c*_pd__11 + _d_Psi__c*_pd__12 + _d_sigma__c*_pd__13
-            _d_fq__guess_q_th = (_d_D__guess_q_th*_pd__10 + _d_Pj__guess_q_th*_pd__11
-                + _d_Psi__guess_q_th*_pd__12 + _d_sigma__guess_q_th*_pd__13)
-            _d_fq__guess_q_thd = (_d_D__guess_q_thd*_pd__10 + _d_Pj__guess_q_thd*_pd__11
-                + _d_Psi__guess_q_thd*_pd__12 + _d_sigma__guess_q_thd*_pd__13)
-            _x27 = (m*math.sqrt(m))
-            _x28 = _x21*_x27*g_s
-            _x29 = _sinQ*_x28
-            _fp = _sigma*_x29
-            _x30 = _sigma*_sinQ*_x27*g_s
-            _pd__14 = _x26*_x30
-            _pd__15 = -_x20*_x30
-            _pd__16 = _x29
-            _pd__17 = _sigma*_x28
-            _d_fp__q_r = (_d_D__q_r*_pd__14 + _d_Psi__q_r*_pd__15 + _d_sigma__q_r*_pd__16
-                + _d_sinQ__q_r*_pd__17)
-            _d_fp__q_th = (_d_D__q_th*_pd__14 + _d_Psi__q_th*_pd__15 + _d_sigma__q_th*_pd__16
-                + _d_sinQ__q_th*_pd__17)
-            _d_fp__q_thd = (_d_D__q_thd*_pd__14 + _d_Psi__q_thd*_pd__15 + _d_sigma__q_thd*_pd__16
-                + _d_sinQ__q_thd*_pd__17)
-            _d_fp__k_d = (_d_D__k_d*_pd__14 + _d_Psi__k_d*_pd__15 + _d_sigma__k_d*_pd__16
-                + _d_sinQ__k_d*_pd__17)
-            _d_fp__c = _d_D__c*_pd__14 + _d_Psi__c*_pd__15 + _d_sigma__c*_pd__16 + _d_sinQ__c*_pd__17
-            _d_fp__guess_q_th = (_d_D__guess_q_th*_pd__14 + _d_Psi__guess_q_th*_pd__15
-                + _d_sigma__guess_q_th*_pd__16 + _d_sinQ__guess_q_th*_pd__17)
-            _d_fp__guess_q_thd = (_d_D__guess_q_thd*_pd__14 + _d_Psi__guess_q_thd*_pd__15
-                + _d_sigma__guess_q_thd*_pd__16 + _d_sinQ__guess_q_thd*_pd__17)
+            for _j1009 in range(int(nq)):
+                _S1F += S1[_j1008, _j1009]*F[_j1009]
+                _d_S1F__q_r += S1[_j1008, _j1009]*d_F__q_r[_j1009]
+                _d_S1F__q_th += S1[_j1008, _j1009]*d_F__q_th[_j1009]
+                _d_S1F__q_thd += S1[_j1008, _j1009]*d_F__q_thd[_j1009]
+                _d_S1F__k_d += S1[_j1008, _j1009]*d_F__k_d[_j1009]
+                _d_S1F__c += S1[_j1008, _j1009]*d_F__c[_j1009]
+                _d_S1F__guess_q_th += S1[_j1008, _j1009]*d_F__guess_q_th[_j1009]
+                _d_S1F__guess_q_thd += S1[_j1008, _j1009]*d_F__guess_q_thd[_j1009]
+            _x10 = _u**-2
+            _x11 = _S1F*_x10
+            _Psi = _x11
+            _pd__5 = _x10
+            _d_Psi__q_r = _d_S1F__q_r*_pd__5
+            _d_Psi__q_th = _d_S1F__q_th*_pd__5
+            _d_Psi__q_thd = _d_S1F__q_thd*_pd__5
+            _d_Psi__k_d = _d_S1F__k_d*_pd__5
+            _d_Psi__c = _d_S1F__c*_pd__5
+            _d_Psi__guess_q_th = _d_S1F__guess_q_th*_pd__5
+            _d_Psi__guess_q_thd = _d_S1F__guess_q_thd*_pd__5
+            _x12 = math.sqrt(_D)
+            _x13 = math.sqrt(m)
+            _x14 = (1.0/math.sqrt(_x11))
+            _x15 = _x13*_x14
+            _ft = _x12*_x15
+            _x16 = (0.5)/_x12
+            _pd__6 = _x15*_x16
+            _x17 = (0.5)*_x12/(_x11*math.sqrt(_x11))
+            _pd__7 = -_x13*_x17
+            _d_ft__q_r = _d_D__q_r*_pd__6 + _d_Psi__q_r*_pd__7
+            _d_ft__q_th = _d_D__q_th*_pd__6 + _d_Psi__q_th*_pd__7
+            _d_ft__q_thd = _d_D__q_thd*_pd__6 + _d_Psi__q_thd*_pd__7
+            _d_ft__k_d = _d_D__k_d*_pd__6 + _d_Psi__k_d*_pd__7
+            _d_ft__c = _d_D__c*_pd__6 + _d_Psi__c*_pd__7
+            _d_ft__guess_q_th = _d_D__guess_q_th*_pd__6 + _d_Psi__guess_q_th*_pd__7
+            _d_ft__guess_q_thd = _d_D__guess_q_thd*_pd__6 + _d_Psi__guess_q_thd*_pd__7
+            _x18 = _x12*_x14
+            _x19 = (1.0/_x13)
+            _x28 = (1.0/_sigma)
+            _x20 = _x19*_x28**2
+            _x21 = _x18*_x20
+            _fq = _Pj*_x21
+            _x22 = _Pj*_x20
+            _x23 = _x14*_x16
+            _pd__8 = _x22*_x23
+            _pd__9 = _x21
+            _pd__10 = -_x17*_x22
+            _pd__11 = -2.0*_Pj*_x18*_x19*_x28**3
+            _d_fq__q_r = _d_D__q_r*_pd__8 + _d_Pj__q_r*_pd__9 + _d_Psi__q_r*_pd__10 + _d_sigma__q_r*_pd__11
+            _d_fq__q_th = (_d_D__q_th*_pd__8 + _d_Pj__q_th*_pd__9 + _d_Psi__q_th*_pd__10
+                + _d_sigma__q_th*_pd__11)
+            _d_fq__q_thd = (_d_D__q_thd*_pd__8 + _d_Pj__q_thd*_pd__9 + _d_Psi__q_thd*_pd__10
+                + _d_sigma__q_thd*_pd__11)
+            _d_fq__k_d = _d_D__k_d*_pd__8 + _d_Pj__k_d*_pd__9 + _d_Psi__k_d*_pd__10 + _d_sigma__k_d*_pd__11
+            _d_fq__c = _d_D__c*_pd__8 + _d_Pj__c*_pd__9 + _d_Psi__c*_pd__10 + _d_sigma__c*_pd__11
+            _d_fq__guess_q_th = (_d_D__guess_q_th*_pd__8 + _d_Pj__guess_q_th*_pd__9
+                + _d_Psi__guess_q_th*_pd__10 + _d_sigma__guess_q_th*_pd__11)
+            _d_fq__guess_q_thd = (_d_D__guess_q_thd*_pd__8 + _d_Pj__guess_q_thd*_pd__9
+                + _d_Psi__guess_q_thd*_pd__10 + _d_sigma__guess_q_thd*_pd__11)
+            _x24 = (m*math.sqrt(m))
+            _x25 = _x18*_x24*g_s
+            _x26 = _sinQ*_x25
+            _fp = _sigma*_x26
+            _x27 = _sigma*_sinQ*_x24*g_s
+            _pd__12 = _x23*_x27
+            _pd__13 = -_x17*_x27
+            _pd__14 = _x26
+            _pd__15 = _sigma*_x25
+            _d_fp__q_r = (_d_D__q_r*_pd__12 + _d_Psi__q_r*_pd__13 + _d_sigma__q_r*_pd__14
+                + _d_sinQ__q_r*_pd__15)
+            _d_fp__q_th = (_d_D__q_th*_pd__12 + _d_Psi__q_th*_pd__13 + _d_sigma__q_th*_pd__14
+                + _d_sinQ__q_th*_pd__15)
+            _d_fp__q_thd = (_d_D__q_thd*_pd__12 + _d_Psi__q_thd*_pd__13 + _d_sigma__q_thd*_pd__14
+                + _d_sinQ__q_thd*_pd__15)
+            _d_fp__k_d = (_d_D__k_d*_pd__12 + _d_Psi__k_d*_pd__13 + _d_sigma__k_d*_pd__14
+                + _d_sinQ__k_d*_pd__15)
+            _d_fp__c = _d_D__c*_pd__12 + _d_Psi__c*_pd__13 + _d_sigma__c*_pd__14 + _d_sinQ__c*_pd__15
+            _d_fp__guess_q_th = (_d_D__guess_q_th*_pd__12 + _d_Psi__guess_q_th*_pd__13
+                + _d_sigma__guess_q_th*_pd__14 + _d_sinQ__guess_q_th*_pd__15)
+            _d_fp__guess_q_thd = (_d_D__guess_q_thd*_pd__12 + _d_Psi__guess_q_thd*_pd__13
+                + _d_sigma__guess_q_thd*_pd__14 + _d_sinQ__guess_q_thd*_pd__15)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return fail(out, STATUS_IMAGINARY_MOMENTUM)
-            ft[_j1032] = _ft
-            fq[_j1032] = _fq
-            fp[_j1032] = _fp
-            Psi[_j1032] = _Psi
-            d_ft__q_r[_j1032] = _d_ft__q_r
-            d_ft__q_th[_j1032] = _d_ft__q_th
-            d_ft__q_thd[_j1032] = _d_ft__q_thd
-            d_ft__k_d[_j1032] = _d_ft__k_d
-            d_ft__c[_j1032] = _d_ft__c
-            d_ft__guess_q_th[_j1032] = _d_ft__guess_q_th
-            d_ft__guess_q_thd[_j1032] = _d_ft__guess_q_thd
-            d_fq__q_r[_j1032] = _d_fq__q_r
-            d_fq__q_th[_j1032] = _d_fq__q_th
-            d_fq__q_thd[_j1032] = _d_fq__q_thd
-            d_fq__k_d[_j1032] = _d_fq__k_d
-            d_fq__c[_j1032] = _d_fq__c
-            d_fq__guess_q_th[_j1032] = _d_fq__guess_q_th
-            d_fq__guess_q_thd[_j1032] = _d_fq__guess_q_thd
-            d_fp__q_r[_j1032] = _d_fp__q_r
-            d_fp__q_th[_j1032] = _d_fp__q_th
-            d_fp__q_thd[_j1032] = _d_fp__q_thd
-            d_fp__k_d[_j1032] = _d_fp__k_d
-            d_fp__c[_j1032] = _d_fp__c
-            d_fp__guess_q_th[_j1032] = _d_fp__guess_q_th
-            d_fp__guess_q_thd[_j1032] = _d_fp__guess_q_thd
-            d_Psi__q_r[_j1032] = _d_Psi__q_r
-            d_Psi__q_th[_j1032] = _d_Psi__q_th
-            d_Psi__q_thd[_j1032] = _d_Psi__q_thd
-            d_Psi__k_d[_j1032] = _d_Psi__k_d
-            d_Psi__c[_j1032] = _d_Psi__c
-            d_Psi__guess_q_th[_j1032] = _d_Psi__guess_q_th
-            d_Psi__guess_q_thd[_j1032] = _d_Psi__guess_q_thd
+            ft[_j1008] = _ft
+            fq[_j1008] = _fq
+            fp[_j1008] = _fp
+            Psi[_j1008] = _Psi
+            d_ft__q_r[_j1008] = _d_ft__q_r
+            d_ft__q_th[_j1008] = _d_ft__q_th
+            d_ft__q_thd[_j1008] = _d_ft__q_thd
+            d_ft__k_d[_j1008] = _d_ft__k_d
+            d_ft__c[_j1008] = _d_ft__c
+            d_ft__guess_q_th[_j1008] = _d_ft__guess_q_th
+            d_ft__guess_q_thd[_j1008] = _d_ft__guess_q_thd
+            d_fq__q_r[_j1008] = _d_fq__q_r
+            d_fq__q_th[_j1008] = _d_fq__q_th
+            d_fq__q_thd[_j1008] = _d_fq__q_thd
+            d_fq__k_d[_j1008] = _d_fq__k_d
+            d_fq__c[_j1008] = _d_fq__c
+            d_fq__guess_q_th[_j1008] = _d_fq__guess_q_th
+            d_fq__guess_q_thd[_j1008] = _d_fq__guess_q_thd
+            d_fp__q_r[_j1008] = _d_fp__q_r
+            d_fp__q_th[_j1008] = _d_fp__q_th
+            d_fp__q_thd[_j1008] = _d_fp__q_thd
+            d_fp__k_d[_j1008] = _d_fp__k_d
+            d_fp__c[_j1008] = _d_fp__c
+            d_fp__guess_q_th[_j1008] = _d_fp__guess_q_th
+            d_fp__guess_q_thd[_j1008] = _d_fp__guess_q_thd
+            d_Psi__q_r[_j1008] = _d_Psi__q_r
+            d_Psi__q_th[_j1008] = _d_Psi__q_th
+            d_Psi__q_thd[_j1008] = _d_Psi__q_thd
+            d_Psi__k_d[_j1008] = _d_Psi__k_d
+            d_Psi__c[_j1008] = _d_Psi__c
+            d_Psi__guess_q_th[_j1008] = _d_Psi__guess_q_th
+            d_Psi__guess_q_thd[_j1008] = _d_Psi__guess_q_thd
         if _conv0 or _it0 == _last0:
             break
         _Wpass = 0.0
@@ -1688,17 +1542,17 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
         _d_Wpass__c = 0.0
         _d_Wpass__guess_q_th = 0.0
         _d_Wpass__guess_q_thd = 0.0
-        for _j1034 in range(int(nq)):
-            _Wpass += w1[_j1034]*F[_j1034]
-            _d_Wpass__q_r += w1[_j1034]*d_F__q_r[_j1034]
-            _d_Wpass__q_th += w1[_j1034]*d_F__q_th[_j1034]
-            _d_Wpass__q_thd += w1[_j1034]*d_F__q_thd[_j1034]
-            _d_Wpass__k_d += w1[_j1034]*d_F__k_d[_j1034]
-            _d_Wpass__c += w1[_j1034]*d_F__c[_j1034]
-            _d_Wpass__guess_q_th += w1[_j1034]*d_F__guess_q_th[_j1034]
-            _d_Wpass__guess_q_thd += w1[_j1034]*d_F__guess_q_thd[_j1034]
+        for _j1010 in range(int(nq)):
+            _Wpass += w1[_j1010]*F[_j1010]
+            _d_Wpass__q_r += w1[_j1010]*d_F__q_r[_j1010]
+            _d_Wpass__q_th += w1[_j1010]*d_F__q_th[_j1010]
+            _d_Wpass__q_thd += w1[_j1010]*d_F__q_thd[_j1010]
+            _d_Wpass__k_d += w1[_j1010]*d_F__k_d[_j1010]
+            _d_Wpass__c += w1[_j1010]*d_F__c[_j1010]
+            _d_Wpass__guess_q_th += w1[_j1010]*d_F__guess_q_th[_j1010]
+            _d_Wpass__guess_q_thd += w1[_j1010]*d_F__guess_q_thd[_j1010]
         # the next iterate at the nodes
-        for _j1042 in range(int(nq)):
+        for _j1018 in range(int(nq)):
             _Sfq = 0.0
             _Sfp = 0.0
             _d_Sfq__q_r = 0.0
@@ -1715,107 +1569,107 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
             _d_Sfp__c = 0.0
             _d_Sfp__guess_q_th = 0.0
             _d_Sfp__guess_q_thd = 0.0
-            for _j1043 in range(int(nq)):
-                _Sfq += S[_j1042, _j1043]*fq[_j1043]
-                _Sfp += S[_j1042, _j1043]*fp[_j1043]
-                _d_Sfq__q_r += S[_j1042, _j1043]*d_fq__q_r[_j1043]
-                _d_Sfq__q_th += S[_j1042, _j1043]*d_fq__q_th[_j1043]
-                _d_Sfq__q_thd += S[_j1042, _j1043]*d_fq__q_thd[_j1043]
-                _d_Sfq__k_d += S[_j1042, _j1043]*d_fq__k_d[_j1043]
-                _d_Sfq__c += S[_j1042, _j1043]*d_fq__c[_j1043]
-                _d_Sfq__guess_q_th += S[_j1042, _j1043]*d_fq__guess_q_th[_j1043]
-                _d_Sfq__guess_q_thd += S[_j1042, _j1043]*d_fq__guess_q_thd[_j1043]
-                _d_Sfp__q_r += S[_j1042, _j1043]*d_fp__q_r[_j1043]
-                _d_Sfp__q_th += S[_j1042, _j1043]*d_fp__q_th[_j1043]
-                _d_Sfp__q_thd += S[_j1042, _j1043]*d_fp__q_thd[_j1043]
-                _d_Sfp__k_d += S[_j1042, _j1043]*d_fp__k_d[_j1043]
-                _d_Sfp__c += S[_j1042, _j1043]*d_fp__c[_j1043]
-                _d_Sfp__guess_q_th += S[_j1042, _j1043]*d_fp__guess_q_th[_j1043]
-                _d_Sfp__guess_q_thd += S[_j1042, _j1043]*d_fp__guess_q_thd[_j1043]
-            Q_next[_j1042] = _Sfq + q_th
-            P_next[_j1042] = _Sfp + m*q_r**2*q_thd
-            d_Q_next__q_r[_j1042] = _d_Sfq__q_r
-            d_Q_next__q_th[_j1042] = _d_Sfq__q_th + 1.0
-            d_Q_next__q_thd[_j1042] = _d_Sfq__q_thd
-            d_Q_next__k_d[_j1042] = _d_Sfq__k_d
-            d_Q_next__c[_j1042] = _d_Sfq__c
-            d_Q_next__guess_q_th[_j1042] = _d_Sfq__guess_q_th
-            d_Q_next__guess_q_thd[_j1042] = _d_Sfq__guess_q_thd
-            d_P_next__q_r[_j1042] = _d_Sfp__q_r + 2.0*m*q_r*q_thd
-            d_P_next__q_th[_j1042] = _d_Sfp__q_th
-            d_P_next__q_thd[_j1042] = _d_Sfp__q_thd + m*q_r**2
-            d_P_next__k_d[_j1042] = _d_Sfp__k_d
-            d_P_next__c[_j1042] = _d_Sfp__c
-            d_P_next__guess_q_th[_j1042] = _d_Sfp__guess_q_th
-            d_P_next__guess_q_thd[_j1042] = _d_Sfp__guess_q_thd
+            for _j1019 in range(int(nq)):
+                _Sfq += S[_j1018, _j1019]*fq[_j1019]
+                _Sfp += S[_j1018, _j1019]*fp[_j1019]
+                _d_Sfq__q_r += S[_j1018, _j1019]*d_fq__q_r[_j1019]
+                _d_Sfq__q_th += S[_j1018, _j1019]*d_fq__q_th[_j1019]
+                _d_Sfq__q_thd += S[_j1018, _j1019]*d_fq__q_thd[_j1019]
+                _d_Sfq__k_d += S[_j1018, _j1019]*d_fq__k_d[_j1019]
+                _d_Sfq__c += S[_j1018, _j1019]*d_fq__c[_j1019]
+                _d_Sfq__guess_q_th += S[_j1018, _j1019]*d_fq__guess_q_th[_j1019]
+                _d_Sfq__guess_q_thd += S[_j1018, _j1019]*d_fq__guess_q_thd[_j1019]
+                _d_Sfp__q_r += S[_j1018, _j1019]*d_fp__q_r[_j1019]
+                _d_Sfp__q_th += S[_j1018, _j1019]*d_fp__q_th[_j1019]
+                _d_Sfp__q_thd += S[_j1018, _j1019]*d_fp__q_thd[_j1019]
+                _d_Sfp__k_d += S[_j1018, _j1019]*d_fp__k_d[_j1019]
+                _d_Sfp__c += S[_j1018, _j1019]*d_fp__c[_j1019]
+                _d_Sfp__guess_q_th += S[_j1018, _j1019]*d_fp__guess_q_th[_j1019]
+                _d_Sfp__guess_q_thd += S[_j1018, _j1019]*d_fp__guess_q_thd[_j1019]
+            Q_next[_j1018] = _Sfq + q_th
+            P_next[_j1018] = _Sfp + m*q_r**2*q_thd
+            d_Q_next__q_r[_j1018] = _d_Sfq__q_r
+            d_Q_next__q_th[_j1018] = _d_Sfq__q_th + 1.0
+            d_Q_next__q_thd[_j1018] = _d_Sfq__q_thd
+            d_Q_next__k_d[_j1018] = _d_Sfq__k_d
+            d_Q_next__c[_j1018] = _d_Sfq__c
+            d_Q_next__guess_q_th[_j1018] = _d_Sfq__guess_q_th
+            d_Q_next__guess_q_thd[_j1018] = _d_Sfq__guess_q_thd
+            d_P_next__q_r[_j1018] = _d_Sfp__q_r + 2.0*m*q_r*q_thd
+            d_P_next__q_th[_j1018] = _d_Sfp__q_th
+            d_P_next__q_thd[_j1018] = _d_Sfp__q_thd + m*q_r**2
+            d_P_next__k_d[_j1018] = _d_Sfp__k_d
+            d_P_next__c[_j1018] = _d_Sfp__c
+            d_P_next__guess_q_th[_j1018] = _d_Sfp__guess_q_th
+            d_P_next__guess_q_thd[_j1018] = _d_Sfp__guess_q_thd
         # D = q_r_lo - q_r_b, or to the leg force's zero (liftoff force)
-        _x32 = k_d*l0
-        _x33 = k_d*q_r
-        _x34 = 2.0*_x32 - 2.0*_x33
-        _x35 = _x34**2
-        _x36 = math.sqrt(_Wpass)
-        _x37 = (1.0/math.sqrt(m))
-        _x38 = _x36*_x37
-        _x39 = 2.0*c
-        _x40 = _x38*_x39
-        _x41 = (1.0/m)
-        _x42 = _Wpass*_x41
-        _x43 = 4.0*c**2
-        _x44 = 4.0*k_d
-        _x45 = math.sqrt(_x42*_x43 + _x44*(_x32 - _x33))
-        _x46 = _x40 + _x45
-        _x55 = (1.0/_x46)
-        _x47 = _x55**2
-        _x48 = -q_r_lo
-        _x49 = -_x48 - q_r
-        _x50 = (liftoff == 0.0) and (_x40*math.sqrt(_x49) - k_d*(_x48 + l0) > 0.0)
-        _D_next = ((_x35*_x47) if _x50 else (_x49))
-        _x51 = (1.0/_x45)
-        _x52 = _x35*_x55**3
-        _pd__18 = ((_x52*(-_x41*_x43*_x51 - _x37*_x39/_x36)) if _x50 else (0.0))
-        _x53 = _x34*_x47
-        _x54 = _x51*_x52
-        _d_D_next__q_r = _d_Wpass__q_r*_pd__18 + ((-_x44*_x53 + 4.0*_x54*k_d**2) if _x50 else (-1.0))
-        _d_D_next__q_th = _d_Wpass__q_th*_pd__18
-        _d_D_next__q_thd = _d_Wpass__q_thd*_pd__18
-        _d_D_next__k_d = (_d_Wpass__k_d*_pd__18 + ((_x53*(4.0*l0 - 4.0*q_r) - 2.0*_x54*(_x34 + 2.0*k_d*(l0
-            - q_r))) if _x50 else (0.0)))
-        _d_D_next__c = _d_Wpass__c*_pd__18 + ((_x52*(-4.0*_x38 - 8.0*_x42*_x51*c)) if _x50 else (0.0))
-        _d_D_next__guess_q_th = _d_Wpass__guess_q_th*_pd__18
-        _d_D_next__guess_q_thd = _d_Wpass__guess_q_thd*_pd__18
+        _x29 = k_d*l0
+        _x30 = k_d*q_r
+        _x31 = 2.0*_x29 - 2.0*_x30
+        _x32 = _x31**2
+        _x33 = math.sqrt(_Wpass)
+        _x34 = (1.0/math.sqrt(m))
+        _x35 = _x33*_x34
+        _x36 = 2.0*c
+        _x37 = _x35*_x36
+        _x38 = (1.0/m)
+        _x39 = _Wpass*_x38
+        _x40 = 4.0*c**2
+        _x41 = 4.0*k_d
+        _x42 = math.sqrt(_x39*_x40 + _x41*(_x29 - _x30))
+        _x43 = _x37 + _x42
+        _x52 = (1.0/_x43)
+        _x44 = _x52**2
+        _x45 = -q_r_lo
+        _x46 = -_x45 - q_r
+        _x47 = (liftoff == 0.0) and (_x37*math.sqrt(_x46) - k_d*(_x45 + l0) > 0.0)
+        _D_next = ((_x32*_x44) if _x47 else (_x46))
+        _x48 = (1.0/_x42)
+        _x49 = _x32*_x52**3
+        _pd__16 = ((_x49*(-_x38*_x40*_x48 - _x34*_x36/_x33)) if _x47 else (0.0))
+        _x50 = _x31*_x44
+        _x51 = _x48*_x49
+        _d_D_next__q_r = _d_Wpass__q_r*_pd__16 + ((-_x41*_x50 + 4.0*_x51*k_d**2) if _x47 else (-1.0))
+        _d_D_next__q_th = _d_Wpass__q_th*_pd__16
+        _d_D_next__q_thd = _d_Wpass__q_thd*_pd__16
+        _d_D_next__k_d = (_d_Wpass__k_d*_pd__16 + ((_x50*(4.0*l0 - 4.0*q_r) - 2.0*_x51*(_x31 + 2.0*k_d*(l0
+            - q_r))) if _x47 else (0.0)))
+        _d_D_next__c = _d_Wpass__c*_pd__16 + ((_x49*(-4.0*_x35 - 8.0*_x39*_x48*c)) if _x47 else (0.0))
+        _d_D_next__guess_q_th = _d_Wpass__guess_q_th*_pd__16
+        _d_D_next__guess_q_thd = _d_Wpass__guess_q_thd*_pd__16
         # next values
         _D__next = _D_next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_D__next - _D) <= tol*(l0))
-        for _j1044 in range(int(nq)):
-            _conv0 = _conv0 and abs(Q_next[_j1044] - Q[_j1044]) <= tol*(1.0)
-            Q[_j1044] = Q_next[_j1044]
-            _conv0 = (_conv0 and abs(P_next[_j1044] - P[_j1044]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+        for _j1020 in range(int(nq)):
+            _conv0 = _conv0 and abs(Q_next[_j1020] - Q[_j1020]) <= tol*(1.0)
+            Q[_j1020] = Q_next[_j1020]
+            _conv0 = (_conv0 and abs(P_next[_j1020] - P[_j1020]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
-            P[_j1044] = P_next[_j1044]
-            Psr[_j1044] = Psi[_j1044]
-            d_Q__q_r[_j1044] = d_Q_next__q_r[_j1044]
-            d_Q__q_th[_j1044] = d_Q_next__q_th[_j1044]
-            d_Q__q_thd[_j1044] = d_Q_next__q_thd[_j1044]
-            d_Q__k_d[_j1044] = d_Q_next__k_d[_j1044]
-            d_Q__c[_j1044] = d_Q_next__c[_j1044]
-            d_Q__guess_q_th[_j1044] = d_Q_next__guess_q_th[_j1044]
-            d_Q__guess_q_thd[_j1044] = d_Q_next__guess_q_thd[_j1044]
-            d_P__q_r[_j1044] = d_P_next__q_r[_j1044]
-            d_P__q_th[_j1044] = d_P_next__q_th[_j1044]
-            d_P__q_thd[_j1044] = d_P_next__q_thd[_j1044]
-            d_P__k_d[_j1044] = d_P_next__k_d[_j1044]
-            d_P__c[_j1044] = d_P_next__c[_j1044]
-            d_P__guess_q_th[_j1044] = d_P_next__guess_q_th[_j1044]
-            d_P__guess_q_thd[_j1044] = d_P_next__guess_q_thd[_j1044]
-            d_Psr__q_r[_j1044] = d_Psi__q_r[_j1044]
-            d_Psr__q_th[_j1044] = d_Psi__q_th[_j1044]
-            d_Psr__q_thd[_j1044] = d_Psi__q_thd[_j1044]
-            d_Psr__k_d[_j1044] = d_Psi__k_d[_j1044]
-            d_Psr__c[_j1044] = d_Psi__c[_j1044]
-            d_Psr__guess_q_th[_j1044] = d_Psi__guess_q_th[_j1044]
-            d_Psr__guess_q_thd[_j1044] = d_Psi__guess_q_thd[_j1044]
+            P[_j1020] = P_next[_j1020]
+            Psr[_j1020] = Psi[_j1020]
+            d_Q__q_r[_j1020] = d_Q_next__q_r[_j1020]
+            d_Q__q_th[_j1020] = d_Q_next__q_th[_j1020]
+            d_Q__q_thd[_j1020] = d_Q_next__q_thd[_j1020]
+            d_Q__k_d[_j1020] = d_Q_next__k_d[_j1020]
+            d_Q__c[_j1020] = d_Q_next__c[_j1020]
+            d_Q__guess_q_th[_j1020] = d_Q_next__guess_q_th[_j1020]
+            d_Q__guess_q_thd[_j1020] = d_Q_next__guess_q_thd[_j1020]
+            d_P__q_r[_j1020] = d_P_next__q_r[_j1020]
+            d_P__q_th[_j1020] = d_P_next__q_th[_j1020]
+            d_P__q_thd[_j1020] = d_P_next__q_thd[_j1020]
+            d_P__k_d[_j1020] = d_P_next__k_d[_j1020]
+            d_P__c[_j1020] = d_P_next__c[_j1020]
+            d_P__guess_q_th[_j1020] = d_P_next__guess_q_th[_j1020]
+            d_P__guess_q_thd[_j1020] = d_P_next__guess_q_thd[_j1020]
+            d_Psr__q_r[_j1020] = d_Psi__q_r[_j1020]
+            d_Psr__q_th[_j1020] = d_Psi__q_th[_j1020]
+            d_Psr__q_thd[_j1020] = d_Psi__q_thd[_j1020]
+            d_Psr__k_d[_j1020] = d_Psi__k_d[_j1020]
+            d_Psr__c[_j1020] = d_Psi__c[_j1020]
+            d_Psr__guess_q_th[_j1020] = d_Psi__guess_q_th[_j1020]
+            d_Psr__guess_q_thd[_j1020] = d_Psi__guess_q_thd[_j1020]
         _pkn0 = (_D__next, _d_D_next__q_r, _d_D_next__q_th, _d_D_next__q_thd, _d_D_next__k_d, _d_D_next__c,
             _d_D_next__guess_q_th, _d_D_next__guess_q_thd, )
         _pk0 = _pkn0
@@ -1852,39 +1706,39 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
     _d_work__c = 0.0
     _d_work__guess_q_th = 0.0
     _d_work__guess_q_thd = 0.0
-    for _j1045 in range(int(nq)):
-        _t_end += w[_j1045]*ft[_j1045]
-        _d_t_end__q_r += w[_j1045]*d_ft__q_r[_j1045]
-        _d_t_end__q_th += w[_j1045]*d_ft__q_th[_j1045]
-        _d_t_end__q_thd += w[_j1045]*d_ft__q_thd[_j1045]
-        _d_t_end__k_d += w[_j1045]*d_ft__k_d[_j1045]
-        _d_t_end__c += w[_j1045]*d_ft__c[_j1045]
-        _d_t_end__guess_q_th += w[_j1045]*d_ft__guess_q_th[_j1045]
-        _d_t_end__guess_q_thd += w[_j1045]*d_ft__guess_q_thd[_j1045]
-        _q_end += w[_j1045]*fq[_j1045]
-        _d_q_end__q_r += w[_j1045]*d_fq__q_r[_j1045]
-        _d_q_end__q_th += w[_j1045]*d_fq__q_th[_j1045]
-        _d_q_end__q_thd += w[_j1045]*d_fq__q_thd[_j1045]
-        _d_q_end__k_d += w[_j1045]*d_fq__k_d[_j1045]
-        _d_q_end__c += w[_j1045]*d_fq__c[_j1045]
-        _d_q_end__guess_q_th += w[_j1045]*d_fq__guess_q_th[_j1045]
-        _d_q_end__guess_q_thd += w[_j1045]*d_fq__guess_q_thd[_j1045]
-        _p_end += w[_j1045]*fp[_j1045]
-        _d_p_end__q_r += w[_j1045]*d_fp__q_r[_j1045]
-        _d_p_end__q_th += w[_j1045]*d_fp__q_th[_j1045]
-        _d_p_end__q_thd += w[_j1045]*d_fp__q_thd[_j1045]
-        _d_p_end__k_d += w[_j1045]*d_fp__k_d[_j1045]
-        _d_p_end__c += w[_j1045]*d_fp__c[_j1045]
-        _d_p_end__guess_q_th += w[_j1045]*d_fp__guess_q_th[_j1045]
-        _d_p_end__guess_q_thd += w[_j1045]*d_fp__guess_q_thd[_j1045]
-        _work += w1[_j1045]*F[_j1045]
-        _d_work__q_r += w1[_j1045]*d_F__q_r[_j1045]
-        _d_work__q_th += w1[_j1045]*d_F__q_th[_j1045]
-        _d_work__q_thd += w1[_j1045]*d_F__q_thd[_j1045]
-        _d_work__k_d += w1[_j1045]*d_F__k_d[_j1045]
-        _d_work__c += w1[_j1045]*d_F__c[_j1045]
-        _d_work__guess_q_th += w1[_j1045]*d_F__guess_q_th[_j1045]
-        _d_work__guess_q_thd += w1[_j1045]*d_F__guess_q_thd[_j1045]
+    for _j1021 in range(int(nq)):
+        _t_end += w[_j1021]*ft[_j1021]
+        _d_t_end__q_r += w[_j1021]*d_ft__q_r[_j1021]
+        _d_t_end__q_th += w[_j1021]*d_ft__q_th[_j1021]
+        _d_t_end__q_thd += w[_j1021]*d_ft__q_thd[_j1021]
+        _d_t_end__k_d += w[_j1021]*d_ft__k_d[_j1021]
+        _d_t_end__c += w[_j1021]*d_ft__c[_j1021]
+        _d_t_end__guess_q_th += w[_j1021]*d_ft__guess_q_th[_j1021]
+        _d_t_end__guess_q_thd += w[_j1021]*d_ft__guess_q_thd[_j1021]
+        _q_end += w[_j1021]*fq[_j1021]
+        _d_q_end__q_r += w[_j1021]*d_fq__q_r[_j1021]
+        _d_q_end__q_th += w[_j1021]*d_fq__q_th[_j1021]
+        _d_q_end__q_thd += w[_j1021]*d_fq__q_thd[_j1021]
+        _d_q_end__k_d += w[_j1021]*d_fq__k_d[_j1021]
+        _d_q_end__c += w[_j1021]*d_fq__c[_j1021]
+        _d_q_end__guess_q_th += w[_j1021]*d_fq__guess_q_th[_j1021]
+        _d_q_end__guess_q_thd += w[_j1021]*d_fq__guess_q_thd[_j1021]
+        _p_end += w[_j1021]*fp[_j1021]
+        _d_p_end__q_r += w[_j1021]*d_fp__q_r[_j1021]
+        _d_p_end__q_th += w[_j1021]*d_fp__q_th[_j1021]
+        _d_p_end__q_thd += w[_j1021]*d_fp__q_thd[_j1021]
+        _d_p_end__k_d += w[_j1021]*d_fp__k_d[_j1021]
+        _d_p_end__c += w[_j1021]*d_fp__c[_j1021]
+        _d_p_end__guess_q_th += w[_j1021]*d_fp__guess_q_th[_j1021]
+        _d_p_end__guess_q_thd += w[_j1021]*d_fp__guess_q_thd[_j1021]
+        _work += w1[_j1021]*F[_j1021]
+        _d_work__q_r += w1[_j1021]*d_F__q_r[_j1021]
+        _d_work__q_th += w1[_j1021]*d_F__q_th[_j1021]
+        _d_work__q_thd += w1[_j1021]*d_F__q_thd[_j1021]
+        _d_work__k_d += w1[_j1021]*d_F__k_d[_j1021]
+        _d_work__c += w1[_j1021]*d_F__c[_j1021]
+        _d_work__guess_q_th += w1[_j1021]*d_F__guess_q_th[_j1021]
+        _d_work__guess_q_thd += w1[_j1021]*d_F__guess_q_thd[_j1021]
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)
@@ -1892,75 +1746,65 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_c_guess_q_th_guess_q_thd(q_r, q
     t_half = _t_end
     end_q_th = _q_end + q_th
     d_end_q_th__q_th = _d_q_end__q_th + 1.0
-    _lo_q_r = q_r_lo
-    _x56 = math.sqrt(_D*_work)/math.sqrt(m)
-    end_q_rd = 2.0*_x56
-    _pd__19 = _x56/_D
-    _pd__20 = _x56/_work
-    d_end_q_rd__q_r = _d_D__q_r*_pd__19 + _d_work__q_r*_pd__20
-    d_end_q_rd__q_th = _d_D__q_th*_pd__19 + _d_work__q_th*_pd__20
-    d_end_q_rd__q_thd = _d_D__q_thd*_pd__19 + _d_work__q_thd*_pd__20
-    d_end_q_rd__k_d = _d_D__k_d*_pd__19 + _d_work__k_d*_pd__20
-    d_end_q_rd__c = _d_D__c*_pd__19 + _d_work__c*_pd__20
-    d_end_q_rd__guess_q_th = _d_D__guess_q_th*_pd__19 + _d_work__guess_q_th*_pd__20
-    d_end_q_rd__guess_q_thd = _d_D__guess_q_thd*_pd__19 + _d_work__guess_q_thd*_pd__20
-    _x57 = q_r**2
-    _x58 = q_r_lo**-2
-    _x59 = _x58/m
-    _lo_q_thd = _x59*(_p_end + _x57*m*q_thd)
-    _pd__21 = _x59
-    _d_lo_q_thd__q_r = _d_p_end__q_r*_pd__21 + 2.0*_x58*q_r*q_thd
-    _d_lo_q_thd__q_th = _d_p_end__q_th*_pd__21
-    _d_lo_q_thd__q_thd = _d_p_end__q_thd*_pd__21 + _x57*_x58
-    _d_lo_q_thd__k_d = _d_p_end__k_d*_pd__21
-    _d_lo_q_thd__c = _d_p_end__c*_pd__21
-    _d_lo_q_thd__guess_q_th = _d_p_end__guess_q_th*_pd__21
-    _d_lo_q_thd__guess_q_thd = _d_p_end__guess_q_thd*_pd__21
+    _x53 = math.sqrt(_D*_work)/math.sqrt(m)
+    end_q_rd = 2.0*_x53
+    _pd__17 = _x53/_D
+    _pd__18 = _x53/_work
+    d_end_q_rd__q_r = _d_D__q_r*_pd__17 + _d_work__q_r*_pd__18
+    d_end_q_rd__q_th = _d_D__q_th*_pd__17 + _d_work__q_th*_pd__18
+    d_end_q_rd__q_thd = _d_D__q_thd*_pd__17 + _d_work__q_thd*_pd__18
+    d_end_q_rd__k_d = _d_D__k_d*_pd__17 + _d_work__k_d*_pd__18
+    d_end_q_rd__c = _d_D__c*_pd__17 + _d_work__c*_pd__18
+    d_end_q_rd__guess_q_th = _d_D__guess_q_th*_pd__17 + _d_work__guess_q_th*_pd__18
+    d_end_q_rd__guess_q_thd = _d_D__guess_q_thd*_pd__17 + _d_work__guess_q_thd*_pd__18
+    _x54 = q_r**2
+    _x55 = q_r_lo**-2
+    _x56 = _x55/m
+    _lo_q_thd = _x56*(_p_end + _x54*m*q_thd)
+    _pd__19 = _x56
+    _d_lo_q_thd__q_r = _d_p_end__q_r*_pd__19 + 2.0*_x55*q_r*q_thd
+    _d_lo_q_thd__q_th = _d_p_end__q_th*_pd__19
+    _d_lo_q_thd__q_thd = _d_p_end__q_thd*_pd__19 + _x54*_x55
+    _d_lo_q_thd__k_d = _d_p_end__k_d*_pd__19
+    _d_lo_q_thd__c = _d_p_end__c*_pd__19
+    _d_lo_q_thd__guess_q_th = _d_p_end__guess_q_th*_pd__19
+    _d_lo_q_thd__guess_q_thd = _d_p_end__guess_q_thd*_pd__19
     passes = _passes
-    # liftoff at q_r_b + D, short of q_r_lo (where the leg force falls to 0)
-    _short = ((1.0) if (_D < -q_r + q_r_lo) else (0.0))
-    _x60 = _D + q_r
-    _f_q_r = _x60
-    _d_f_q_r__q_r = _d_D__q_r + 1.0
-    _x61 = q_r**2
-    _x62 = _p_end + _x61*m*q_thd
-    _x63 = (1.0/m)
-    _x67 = (1.0/_x60)
-    _x64 = _x67**2
-    _x65 = _x63*_x64
-    _f_q_thd = _x62*_x65
-    _x66 = -2.0*_x62*_x63*_x67**3
-    _pd__22 = _x66
-    _pd__23 = _x65
-    _d_f_q_thd__q_r = _d_D__q_r*_pd__22 + _d_p_end__q_r*_pd__23 + 2.0*_x64*q_r*q_thd + _x66
-    _d_f_q_thd__q_th = _d_D__q_th*_pd__22 + _d_p_end__q_th*_pd__23
-    _d_f_q_thd__q_thd = _d_D__q_thd*_pd__22 + _d_p_end__q_thd*_pd__23 + _x61*_x64
-    _d_f_q_thd__k_d = _d_D__k_d*_pd__22 + _d_p_end__k_d*_pd__23
-    _d_f_q_thd__c = _d_D__c*_pd__22 + _d_p_end__c*_pd__23
-    _d_f_q_thd__guess_q_th = _d_D__guess_q_th*_pd__22 + _d_p_end__guess_q_th*_pd__23
-    _d_f_q_thd__guess_q_thd = _d_D__guess_q_thd*_pd__22 + _d_p_end__guess_q_thd*_pd__23
-    # liftoff state
-    _x68 = (_short == 1.0)
-    end_q_r = ((_f_q_r) if _x68 else (_lo_q_r))
-    _x69 = ((1.0) if _x68 else (0.0))
-    _pd__24 = _x69
-    d_end_q_r__q_r = _d_f_q_r__q_r*_pd__24
-    d_end_q_r__q_th = _d_D__q_th*_pd__24
-    d_end_q_r__q_thd = _d_D__q_thd*_pd__24
-    d_end_q_r__k_d = _d_D__k_d*_pd__24
-    d_end_q_r__c = _d_D__c*_pd__24
-    d_end_q_r__guess_q_th = _d_D__guess_q_th*_pd__24
-    d_end_q_r__guess_q_thd = _d_D__guess_q_thd*_pd__24
-    end_q_thd = ((_f_q_thd) if _x68 else (_lo_q_thd))
-    _pd__25 = _x69
-    _pd__26 = ((0.0) if _x68 else (1.0))
-    d_end_q_thd__q_r = _d_f_q_thd__q_r*_pd__25 + _d_lo_q_thd__q_r*_pd__26
-    d_end_q_thd__q_th = _d_f_q_thd__q_th*_pd__25 + _d_lo_q_thd__q_th*_pd__26
-    d_end_q_thd__q_thd = _d_f_q_thd__q_thd*_pd__25 + _d_lo_q_thd__q_thd*_pd__26
-    d_end_q_thd__k_d = _d_f_q_thd__k_d*_pd__25 + _d_lo_q_thd__k_d*_pd__26
-    d_end_q_thd__c = _d_f_q_thd__c*_pd__25 + _d_lo_q_thd__c*_pd__26
-    d_end_q_thd__guess_q_th = _d_f_q_thd__guess_q_th*_pd__25 + _d_lo_q_thd__guess_q_th*_pd__26
-    d_end_q_thd__guess_q_thd = _d_f_q_thd__guess_q_thd*_pd__25 + _d_lo_q_thd__guess_q_thd*_pd__26
+    # liftoff at q_r_lo, or at q_r_b + D short of it
+    _x57 = _D + q_r
+    _x58 = (_D < -q_r + q_r_lo)
+    end_q_r = ((_x57) if _x58 else (q_r_lo))
+    _x59 = ((1.0) if _x58 else (0.0))
+    _pd__20 = _x59
+    d_end_q_r__q_r = _d_D__q_r*_pd__20 + _x59
+    d_end_q_r__q_th = _d_D__q_th*_pd__20
+    d_end_q_r__q_thd = _d_D__q_thd*_pd__20
+    d_end_q_r__k_d = _d_D__k_d*_pd__20
+    d_end_q_r__c = _d_D__c*_pd__20
+    d_end_q_r__guess_q_th = _d_D__guess_q_th*_pd__20
+    d_end_q_r__guess_q_thd = _d_D__guess_q_thd*_pd__20
+    _x60 = q_r**2
+    _x61 = _p_end + _x60*m*q_thd
+    _x62 = (1.0/m)
+    _x66 = (1.0/_x57)
+    _x63 = _x66**2
+    _x64 = _x62*_x63
+    end_q_thd = ((_x61*_x64) if _x58 else (_lo_q_thd))
+    _x65 = -2.0*_x61*_x62*_x66**3
+    _pd__21 = ((_x65) if _x58 else (0.0))
+    _pd__22 = ((0.0) if _x58 else (1.0))
+    _pd__23 = ((_x64) if _x58 else (0.0))
+    d_end_q_thd__q_r = (_d_D__q_r*_pd__21 + _d_lo_q_thd__q_r*_pd__22 + _d_p_end__q_r*_pd__23
+        + ((2.0*_x63*q_r*q_thd + _x65) if _x58 else (0.0)))
+    d_end_q_thd__q_th = _d_D__q_th*_pd__21 + _d_lo_q_thd__q_th*_pd__22 + _d_p_end__q_th*_pd__23
+    d_end_q_thd__q_thd = (_d_D__q_thd*_pd__21 + _d_lo_q_thd__q_thd*_pd__22 + _d_p_end__q_thd*_pd__23
+        + ((_x60*_x63) if _x58 else (0.0)))
+    d_end_q_thd__k_d = _d_D__k_d*_pd__21 + _d_lo_q_thd__k_d*_pd__22 + _d_p_end__k_d*_pd__23
+    d_end_q_thd__c = _d_D__c*_pd__21 + _d_lo_q_thd__c*_pd__22 + _d_p_end__c*_pd__23
+    d_end_q_thd__guess_q_th = (_d_D__guess_q_th*_pd__21 + _d_lo_q_thd__guess_q_th*_pd__22
+        + _d_p_end__guess_q_th*_pd__23)
+    d_end_q_thd__guess_q_thd = (_d_D__guess_q_thd*_pd__21 + _d_lo_q_thd__guess_q_thd*_pd__22
+        + _d_p_end__guess_q_thd*_pd__23)
     # derivatives of the outputs
     d_t_half__q_r = _d_t_end__q_r
     d_t_half__q_th = _d_t_end__q_th

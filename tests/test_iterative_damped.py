@@ -78,10 +78,10 @@ def next_apex_errors(p: SlipParams, liftoff: str, **options) -> np.ndarray:
 #: there (the leg pulls the body to a stop before l0), as the iterative map's do.
 MEASURED = {
     ("force", 0.0): (3.86e-6, 7.18e-6),
-    ("force", 0.02): (3.16e-6, 6.93e-6),
-    ("force", 0.05): (2.43e-6, 6.82e-6),
-    ("force", 0.1): (1.79e-6, 7.02e-6),
-    ("force", 0.2): (1.62e-6, 8.43e-6),
+    ("force", 0.02): (3.17e-6, 6.93e-6),
+    ("force", 0.05): (2.43e-6, 6.85e-6),
+    ("force", 0.1): (1.88e-6, 7.28e-6),
+    ("force", 0.2): (3.82e-6, 1.44e-5),
     ("length", 0.02): (3.85e-6, 9.18e-6),
     ("length", 0.05): (4.51e-6, 1.42e-5),
     ("length", 0.1): (8.00e-6, 3.12e-5),
@@ -127,7 +127,7 @@ def test_damped_jacobian_matches_central_differences(params, liftoff):
     """Every column but q_r_td (at l0: no q_r + h), c's included: the derivatives through the passes
     of the damper's term, and with "force" of the leg force's zero (or q_r_lo first) against central
     differences, h = 1e-6 of each input's scale (l0, sqrt(g l0), 1 rad, sqrt(g/l0), k_c, k_d, the
-    critical damping). Measured: 7.2e-11 to 6.6e-9 of each column's largest entry."""
+    critical damping). Measured: 7.2e-11 to 4.0e-9 of each column's largest entry."""
     p = params
     jac = slipmaps.stance_jacobian("iterative", p, TOUCHDOWN, liftoff=liftoff)
     assert jac.status == Status.OK and jac.inputs[-1] == "c"
@@ -146,17 +146,17 @@ def test_damped_jacobian_matches_central_differences(params, liftoff):
 
 def test_force_liftoff_is_where_the_leg_force_falls_to_zero():
     """liftoff "force": the leg force k_d (l0 - q_r) - c q_rd at the liftoff state is ~0 (the end
-    length from the previous pass's work, the state from the last: measured 5.2e-5 N at 10 % of the
-    critical damping, of k_d l0 = 2e4 N; 20 passes: below 1e-6 N), the liftoff below l0 as the exact
-    map's (measured 3.7e-7 m apart); with q_r_lo before the force's zero, at q_r_lo."""
+    length from the previous pass's work, the state from the last: measured 7.6e-4 N at 10 % of the
+    critical damping, of k_d l0 = 2e4 N; 20 passes: 2e-13 N), the liftoff below l0 as the exact
+    map's (measured 2.8e-8 m apart); with q_r_lo before the force's zero, at q_r_lo."""
     p = damped(0.1)
     res = slipmaps.stance("iterative", p, TOUCHDOWN)
     exact = slipmaps.stance("exact", p, TOUCHDOWN)
     q_r, q_rd = res.values["liftoff_q_r"], res.values["liftoff_q_rd"]
-    assert abs(p.k_d * (p.l0 - q_r) - p.c * q_rd) < 1e-3
+    assert abs(p.k_d * (p.l0 - q_r) - p.c * q_rd) < 2e-3
     assert q_r < p.l0 - 0.01 and abs(q_r - exact.values["liftoff_q_r"]) < 1e-6
     more = slipmaps.stance("iterative", p, TOUCHDOWN, iterations=20).values
-    assert abs(p.k_d * (p.l0 - more["liftoff_q_r"]) - p.c * more["liftoff_q_rd"]) < 1e-6
+    assert abs(p.k_d * (p.l0 - more["liftoff_q_r"]) - p.c * more["liftoff_q_rd"]) < 1e-9
     short = p.with_(q_r_lo=0.97)
     assert slipmaps.stance("iterative", short, TOUCHDOWN).values["liftoff_q_r"] == short.q_r_lo
     length = slipmaps.stance("iterative", p, TOUCHDOWN, liftoff="length")
@@ -167,7 +167,7 @@ def test_force_liftoff_is_where_the_leg_force_falls_to_zero():
 def test_damped_halves_compose_into_the_whole_map(liftoff):
     """Compression half, then decompression half from its bottom: the whole damped stance (the
     whole map's decompression starts from Geyer's liftoff, the half's from the held bottom state;
-    measured 1.4e-7 relative apart at 10 % of the critical damping, 6 passes)."""
+    measured 2.8e-7 relative apart at 10 % of the critical damping, 6 passes)."""
     p = damped(0.1)
     whole = slipmaps.stance("iterative", p, TOUCHDOWN, liftoff=liftoff)
     c = slipmaps.half_stance("iterative-compression", p, TOUCHDOWN)

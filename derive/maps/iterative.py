@@ -138,10 +138,10 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
     psi0 = sp.S.One if compress else F_r.subs({q_r: top, q_th: th0, p_th: pth0}) / 2
     if compress:
         d0, base = top - a["guess_q_r"], top - D
-    else:  # q_r_lo - q_r_b, or (liftoff force) the leg force's zero with W = Psi's zeroth iterate
-        d0, base = _liftoff_distance(a, top, psi0), top
+    else:
+        d0, base = catalog.PARAMS["q_r_lo"].symbol - top, top
     sigma, F, psi, s1f = sym("_sigma"), sym("_F"), sym("_Psi"), sym("_S1F")
-    F_c, F_d, carried = sym("_Fc"), sym("_Fd"), sym("_Psr")
+    carried = sym("_Psr")
     # The damper's force -c p_r/m at the nodes' p_r from the previous pass: the compression half
     # carries the shape Psi/W (W = Psi(1), p_r^2 = 4 m D Psi u^2 = p_r_td^2 u^2 Psi/W: p_r_td is
     # known, p_r < 0 in time), the decompression half Psi (p_r = u sqrt(4 m D Psi) at this pass's D).
@@ -159,7 +159,7 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
     evaluate = (
         Nodes(
             nq,
-            ((Q, "Q"), (P, "P"), (u, "u")),
+            ((Q, "Q"), (P, "P"), (u, "u"), (carried, "Psr")),
             (),
             (
                 Stage(
@@ -170,16 +170,9 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
                     )
                 ),
             ),
-            ((sigma, "sigma"), (F, "Fc"), (sin_q, "sinQ")),
-            comment="node values of the pass: sigma, F_r (29), sin Q",
-        ),
-        Nodes(
-            nq,
-            ((F_c, "Fc"), (u, "u"), (carried, "Psr")),
-            (),
-            (Stage(((F_d, damper),)),),
-            ((F_c + F_d, "F"), (F_d, "Fd")),
-            comment="F_r with the damper's force at the previous pass's Psi (0 at c = 0)",
+            # F_r with the damper's force at the previous pass's p_r (+ 0 at c = 0)
+            ((sigma, "sigma"), (F + damper, "F"), (sin_q, "sinQ")),
+            comment="node values of the pass: sigma, F_r (29) and the damper's force, sin Q",
         ),
         Nodes(
             nq,
@@ -245,12 +238,9 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
     scale_p = sp.Abs(pth0) + m * l0 * sp.sqrt(g_s * l0)
     iterate = Iterate(
         state=((D, d0),),
-        arrays=(
-            ("Q", "Q0", "Q_next", sp.S.One),
-            ("P", "P0", "P_next", scale_p),
-        ),
-        # Psi for the damper's force of the next pass: outside the convergence test (its force, c
-        # times it, follows Q, P and D; at c = 0 it is not used)
+        arrays=(("Q", "Q0", "Q_next", sp.S.One), ("P", "P0", "P_next", scale_p)),
+        # Psi (or its shape) for the damper's force of the next pass: outside the convergence test
+        # (the force, c times it, follows Q, P and D; at c = 0 it is not used)
         array_carry=(("Psr", "Psr0", "Shape" if compress else "Psi"),),
         nodes=nq,
         evaluate=evaluate,
@@ -288,38 +278,30 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
             ),
         )
     work, q_r_lo = sym("_work"), catalog.PARAMS["q_r_lo"].symbol
-    # the liftoff at q_r_lo as without the damper (its arithmetic, its derivatives' too), then the
-    # one at the leg force's zero where D stopped short of q_r_lo (liftoff "force", c > 0)
-    at_lo = {q: sym(f"_lo_{q}") for q in ("q_r", "q_thd")}
-    at_force = {q: sym(f"_f_{q}") for q in ("q_r", "q_thd")}
-    short = sym("_short")
+    # the liftoff at q_r_lo as without the damper (its arithmetic, its derivatives' too), then at the
+    # leg force's zero where D stopped short of q_r_lo (liftoff "force", c > 0)
+    lo_q_thd, short = sym("_lo_q_thd"), D < q_r_lo - top
     return steps + (
         Reduce(work, "w1", "F", nq),
         Stage((), (Guard(work > 0, "NO_LIFTOFF", "p_r_lo^2 = 4 m D int_0^1 F_r u du > 0"),)),
         Stage(
             (
                 *common,
-                (at_lo["q_r"], q_r_lo),
                 (sym("end_q_rd"), sp.sqrt(4 * m * D * work) / m),
-                (at_lo["q_thd"], (pth0 + p_end) / (m * q_r_lo**2)),
+                (lo_q_thd, (pth0 + p_end) / (m * q_r_lo**2)),
                 (sym("passes"), sym("_passes")),
             ),
             comment="liftoff state: p_r_lo^2 = 2 m int F_r (work form)",
         ),
         Stage(
             (
-                (short, sp.Piecewise((sp.S.One, D < q_r_lo - top), (sp.S.Zero, True))),
-                (at_force["q_r"], top + D),
-                (at_force["q_thd"], (pth0 + p_end) / (m * (top + D) ** 2)),
+                (sym("end_q_r"), sp.Piecewise((top + D, short), (q_r_lo, True))),
+                (
+                    sym("end_q_thd"),
+                    sp.Piecewise(((pth0 + p_end) / (m * (top + D) ** 2), short), (lo_q_thd, True)),
+                ),
             ),
-            comment="liftoff at q_r_b + D, short of q_r_lo (where the leg force falls to 0)",
-        ),
-        Stage(
-            tuple(
-                (sym(f"end_{q}"), sp.Piecewise((at_force[q], sp.Eq(short, 1)), (at_lo[q], True)))
-                for q in ("q_r", "q_thd")
-            ),
-            comment="liftoff state",
+            comment="liftoff at q_r_lo, or at q_r_b + D short of it",
         ),
     )
 
