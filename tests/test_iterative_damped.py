@@ -74,8 +74,8 @@ def next_apex_errors(p: SlipParams, liftoff: str, **options) -> np.ndarray:
 #: (4 nodes, 6 passes, Geyer's zeroth iterate) over the 45 steps; the bound asserted is a fifth
 #: above. The issue's target, a mean of 1e-5 (1e-3 %), holds but for "length" at 20 % of the
 #: critical damping, where the 4-node quadrature of the pull phase near liftoff is the floor
-#: (test_length_liftoff_at_strong_damping_needs_more_nodes). Two of those 45 exact steps end NO_LIFTOFF
-#: there (the leg pulls the body to a stop before l0), as the iterative map's do.
+#: (test_length_liftoff_at_strong_damping_needs_more_nodes). Two of those 45 exact steps end
+#: LIFTOFF_DOWNWARD there (the leg pulls the body down before l0), as the iterative map's do.
 MEASURED = {
     ("force", 0.0): (3.86e-6, 7.18e-6),
     ("force", 0.02): (3.17e-6, 6.93e-6),
