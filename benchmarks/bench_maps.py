@@ -22,6 +22,8 @@ Measured side by side, for the human runner (``slipmaps.HUMAN_RUNNER``):
     compiles the Jacobian kernel and everything it calls (target: at most 10 s for the slowest, issue 29);
 (g) the generated Jacobian modules' sizes (lines, longest line).
 
+The leg damping's cost is measured by benchmarks/bench_damping.py.
+
 States: apex heights 1.0-1.1 m, speeds 3-7 m/s, touchdown angles 0.30-0.50 rad (uniform, seed 0);
 the stance states are their touchdowns. Ratios are measured in one run; absolute times move with the
 machine and its load (printed). Usage::

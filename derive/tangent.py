@@ -659,9 +659,14 @@ class _Ctx:
         self.frame.tangents[rd.name.name] = t
         return out
 
-    def zero_array(self, name: str, count) -> Nodes:
-        """A node array of zeros (the tangent of an iteration's state where its start has none)."""
-        return Nodes(count, (), (), (), ((sp.S.Zero, name),), comment=f"{name}: zero")
+    def zero_arrays(self, names: list[str], count) -> tuple[Nodes, ...]:
+        """Node arrays of zeros (the tangents of an iteration's state where its start or update has
+        none), in one node loop."""
+        if not names:
+            return ()
+        return (
+            Nodes(count, (), (), (), tuple((sp.S.Zero, n) for n in names), comment="tangents that are 0"),
+        )
 
     def parts(self, st: Stage) -> list[tuple[list, list]]:
         """For each assignment: its value and the partial derivatives used in two or more directions
@@ -1002,7 +1007,7 @@ class _Ctx:
         # the node arrays of the state: their tangent arrays start as their initial arrays' (zeros
         # where those have none)
         arrays = [(a, i, u) for a, i, u, _ in it.arrays] + list(it.array_carry)
-        pre: list = []
+        zeros: list[str] = []
         array_init = {}
         for a, init, _ in arrays:
             array_init[a] = {}
@@ -1010,8 +1015,9 @@ class _Ctx:
                 ta = outer.arrays.get(init, {}).get(w)
                 if ta is None:
                     ta = tangent_name(init, w)
-                    pre.append(self.zero_array(ta, it.nodes))
+                    zeros.append(ta)
                 array_init[a][w] = ta
+        pre = list(self.zero_arrays(zeros, it.nodes))
         self.frame = outer.copy()
         for s in names:
             self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) if w in reach else 0 for w in wrt}
@@ -1027,13 +1033,15 @@ class _Ctx:
         }
         body = self.steps(it.body)
         array_carry = []
+        zeros = []
         for a, _, upd in arrays:
             for w in reach:
                 tu = self.frame.arrays.get(upd, {}).get(w)
                 if tu is None:
                     tu = tangent_name(upd, w)
-                    body += (self.zero_array(tu, it.nodes),)
+                    zeros.append(tu)
                 array_carry.append((tangent_name(a, w), array_init[a][w], tu))
+        body += self.zero_arrays(zeros, it.nodes)
         # the next values and their tangents as a stage of the body (one CSE, partials shared)
         nxt = [sym(f"{s.name}__next") for s in names]
         body += (self.stage(Stage(tuple(zip(nxt, updates, strict=True)), comment="next values")),)

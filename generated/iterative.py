@@ -157,7 +157,7 @@ _NAN11 = (NAN,) * 11
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, nodes,
+def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, guess_q_th, guess_q_thd, nodes,
         iterations, tol):
     """Schwind and Koditschek's iteration, compression half, converging form (collocation in u, work form of
     p_r).
@@ -173,6 +173,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         guess_q_r: zeroth iterate's bottom q_r
         guess_q_th: zeroth iterate's bottom q_th
         guess_q_thd: zeroth iterate's bottom q_thd
@@ -193,14 +194,15 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     """
     # Total ops: 59
     # inputs: finite and inside their domains
-    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, nodes,
-            iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0)
-            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, c, guess_q_r, guess_q_th, guess_q_thd, nodes,
+            iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0))
+            & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
+            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            & ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, G, Q_next, P_next,) = node_arrays(stack(156), 13, 12)
+    (Q0, P0, Psr0, Q, P, Psr, sigma, F, sinQ, ft, fq, fp, Psi, G, Q_next, P_next, Shape,
+        ) = (node_arrays(stack(204), 17, 12))
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
@@ -221,12 +223,18 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         _u = u[_j1000]
         Q0[_j1000] = _u*(-guess_q_th + q_th) + guess_q_th
         P0[_j1000] = _u*(-guess_q_r**2*guess_q_thd*m + m*q_r**2*q_thd) + guess_q_r**2*guess_q_thd*m
-    # Picard passes on the node values (collocation in u)
-    for _j1013 in range(6):
-        if _j1013 >= nq:
+    # Psi at the nodes, zeroth iterate
+    for _j1002 in range(6):
+        if _j1002 >= nq:
             break
-        Q[_j1013] = Q0[_j1013]
-        P[_j1013] = P0[_j1013]
+        Psr0[_j1002] = 1.0
+    # Picard passes on the node values (collocation in u)
+    for _j1018 in range(6):
+        if _j1018 >= nq:
+            break
+        Q[_j1018] = Q0[_j1018]
+        P[_j1018] = P0[_j1018]
+        Psr[_j1018] = Psr0[_j1018]
     _D = -guess_q_r + q_r
     _passes = 0.0
     _conv0 = False
@@ -236,34 +244,35 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
-        # node values of the pass: sigma, F_r (29), sin Q
-        for _j1002 in range(6):
-            if _j1002 >= nq:
-                break
-            _Qj = Q[_j1002]
-            _Pj = P[_j1002]
-            _u = u[_j1002]
-            _x0 = _D*_u**2 - _D + q_r
-            _sigma = _x0
-            _F = _Pj**2/(_x0**3*m) - _x0*k_c - g_s*m*math.cos(_Qj) + k_c*l0
-            _sinQ = math.sin(_Qj)
-            sigma[_j1002] = _sigma
-            F[_j1002] = _F
-            sinQ[_j1002] = _sinQ
-        # Psi and the u-rates of (30)-(32) at the nodes
+        # node values of the pass: sigma, F_r (29) and the damper's force, sin Q
         for _j1004 in range(6):
             if _j1004 >= nq:
                 break
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
-            _sigma = sigma[_j1004]
-            _sinQ = sinQ[_j1004]
+            _Psr = Psr[_j1004]
+            _x0 = _D*_u**2 - _D + q_r
+            _sigma = _x0
+            _F = _Pj**2/(_x0**3*m) - _x0*k_c - g_s*m*math.cos(_Qj) + k_c*l0
+            _sinQ = math.sin(_Qj)
+            sigma[_j1004] = _sigma
+            F[_j1004] = _F - math.sqrt(_Psr)*_u*c*q_rd
+            sinQ[_j1004] = _sinQ
+        # Psi and the u-rates of (30)-(32) at the nodes
+        for _j1006 in range(6):
+            if _j1006 >= nq:
+                break
+            _Qj = Q[_j1006]
+            _Pj = P[_j1006]
+            _u = u[_j1006]
+            _sigma = sigma[_j1006]
+            _sinQ = sinQ[_j1006]
             _S1F = 0.0
-            for _j1005 in range(6):
-                if _j1005 >= nq:
+            for _j1007 in range(6):
+                if _j1007 >= nq:
                     break
-                _S1F += S1[_j1004, _j1005]*F[_j1005]
+                _S1F += S1[_j1006, _j1007]*F[_j1007]
             _x1 = _S1F/_u**2
             _x2 = math.sqrt(m)
             _x3 = math.sqrt(_D)/math.sqrt(_x1)
@@ -274,70 +283,80 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
-            ft[_j1004] = _ft
-            fq[_j1004] = _fq
-            fp[_j1004] = _fp
+            ft[_j1006] = _ft
+            fq[_j1006] = _fq
+            fp[_j1006] = _fp
+            Psi[_j1006] = _Psi
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
         _wfp = 0.0
-        for _j1006 in range(6):
-            if _j1006 >= nq:
-                break
-            _wfq += w[_j1006]*fq[_j1006]
-            _wfp += w[_j1006]*fp[_j1006]
-        # F_r minus its spring term
         for _j1008 in range(6):
             if _j1008 >= nq:
                 break
-            _F = F[_j1008]
-            _sigma = sigma[_j1008]
-            G[_j1008] = _F - k_c*(-_sigma + l0)
-        _rbar = 0.0
+            _wfq += w[_j1008]*fq[_j1008]
+            _wfp += w[_j1008]*fp[_j1008]
+        # F_r minus its spring term
         for _j1010 in range(6):
             if _j1010 >= nq:
                 break
-            _rbar += w1[_j1010]*G[_j1010]
+            _F = F[_j1010]
+            _sigma = sigma[_j1010]
+            G[_j1010] = _F - k_c*(-_sigma + l0)
+        _rbar = 0.0
+        _Wpass = 0.0
+        for _j1012 in range(6):
+            if _j1012 >= nq:
+                break
+            _rbar += w1[_j1012]*G[_j1012]
+            _Wpass += w1[_j1012]*F[_j1012]
         # the next iterate at the nodes
-        for _j1011 in range(6):
-            if _j1011 >= nq:
+        for _j1014 in range(6):
+            if _j1014 >= nq:
                 break
             _Sfq = 0.0
             _Sfp = 0.0
-            for _j1012 in range(6):
-                if _j1012 >= nq:
+            for _j1015 in range(6):
+                if _j1015 >= nq:
                     break
-                _Sfq += S[_j1011, _j1012]*fq[_j1012]
-                _Sfp += S[_j1011, _j1012]*fp[_j1012]
-            Q_next[_j1011] = -_Sfq + _wfq + q_th
-            P_next[_j1011] = -_Sfp + _wfp + m*q_r**2*q_thd
+                _Sfq += S[_j1014, _j1015]*fq[_j1015]
+                _Sfp += S[_j1014, _j1015]*fp[_j1015]
+            Q_next[_j1014] = -_Sfq + _wfq + q_th
+            P_next[_j1014] = -_Sfp + _wfp + m*q_r**2*q_thd
         # D = q_r_td - q_r_b from the radial work
         _x4 = m*q_rd**2
         _x5 = 2.0*_rbar + k_c*(l0 - q_r)
         _D_next = _x4/(_x5 + math.sqrt(_x4*k_c + _x5**2))
+        # the shape Psi/W
+        for _j1016 in range(6):
+            if _j1016 >= nq:
+                break
+            _Psi = Psi[_j1016]
+            Shape[_j1016] = _Psi/_Wpass
         _n0_0 = _D_next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0))
-        for _j1013 in range(6):
-            if _j1013 >= nq:
+        for _j1018 in range(6):
+            if _j1018 >= nq:
                 break
-            _conv0 = _conv0 and abs(Q_next[_j1013] - Q[_j1013]) <= tol*(1.0)
-            Q[_j1013] = Q_next[_j1013]
-            _conv0 = (_conv0 and abs(P_next[_j1013] - P[_j1013]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            _conv0 = _conv0 and abs(Q_next[_j1018] - Q[_j1018]) <= tol*(1.0)
+            Q[_j1018] = Q_next[_j1018]
+            _conv0 = (_conv0 and abs(P_next[_j1018] - P[_j1018]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
-            P[_j1013] = P_next[_j1013]
+            P[_j1018] = P_next[_j1018]
+            Psr[_j1018] = Shape[_j1018]
         _D = _n0_0
         _passes += 1.0
     _t_end = 0.0
     _q_end = 0.0
     _p_end = 0.0
-    for _j1014 in range(6):
-        if _j1014 >= nq:
+    for _j1019 in range(6):
+        if _j1019 >= nq:
             break
-        _t_end += w[_j1014]*ft[_j1014]
-        _q_end += w[_j1014]*fq[_j1014]
-        _p_end += w[_j1014]*fp[_j1014]
+        _t_end += w[_j1019]*ft[_j1019]
+        _q_end += w[_j1019]*fq[_j1019]
+        _p_end += w[_j1019]*fp[_j1019]
     # bottom state
     _x6 = -_D + q_r
     t_half = _t_end
@@ -355,8 +374,8 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd, nodes,
-        iterations, tol):
+def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, guess_q_th, guess_q_thd, nodes,
+        iterations, tol, liftoff):
     """Schwind and Koditschek's iteration, decompression half, converging form (collocation in u, work form of
     p_r).
 
@@ -372,6 +391,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         guess_q_th: zeroth iterate's liftoff q_th
         guess_q_thd: zeroth iterate's liftoff q_thd
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
@@ -379,6 +399,8 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Returns a tuple:
         t_half: time of the decompression half [s]
@@ -389,16 +411,18 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         passes: Picard passes run [1]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 51
+    # Total ops: 100
     # inputs: finite and inside their domains
-    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd, nodes,
-            iterations, tol,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0)
-            or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, c, guess_q_th, guess_q_thd, nodes,
+            iterations, tol, liftoff,)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((c >= 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes
+            == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0)) & ((liftoff
+            == 0.0) or (liftoff == 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    (Q0, P0, Q, P, sigma, F, sinQ, ft, fq, fp, Q_next, P_next,) = node_arrays(stack(144), 12, 12)
+    (Q0, P0, Psr0, Q, P, Psr, sigma, F, sinQ, ft, fq, fp, Psi, Q_next, P_next,) = (node_arrays(stack(180), 15,
+        12))
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)
@@ -422,12 +446,18 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         _u = u[_j1000]
         Q0[_j1000] = _u*(guess_q_th - q_th) + q_th
         P0[_j1000] = _u*(guess_q_thd*m*q_r_lo**2 - m*q_r**2*q_thd) + m*q_r**2*q_thd
-    # Picard passes on the node values (collocation in u)
-    for _j1010 in range(6):
-        if _j1010 >= nq:
+    # Psi at the nodes, zeroth iterate
+    for _j1002 in range(6):
+        if _j1002 >= nq:
             break
-        Q[_j1010] = Q0[_j1010]
-        P[_j1010] = P0[_j1010]
+        Psr0[_j1002] = -0.5*g_s*m*math.cos(q_th) + (0.5)*k_d*l0 - 0.5*k_d*q_r + (0.5)*m*q_r*q_thd**2
+    # Picard passes on the node values (collocation in u)
+    for _j1013 in range(6):
+        if _j1013 >= nq:
+            break
+        Q[_j1013] = Q0[_j1013]
+        P[_j1013] = P0[_j1013]
+        Psr[_j1013] = Psr0[_j1013]
     _D = -q_r + q_r_lo
     _passes = 0.0
     _conv0 = False
@@ -437,34 +467,35 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN6 + (STATUS_NOT_CONVERGED,)
-        # node values of the pass: sigma, F_r (29), sin Q
-        for _j1002 in range(6):
-            if _j1002 >= nq:
-                break
-            _Qj = Q[_j1002]
-            _Pj = P[_j1002]
-            _u = u[_j1002]
-            _x0 = _D*_u**2 + q_r
-            _sigma = _x0
-            _F = _Pj**2/(_x0**3*m) - _x0*k_d - g_s*m*math.cos(_Qj) + k_d*l0
-            _sinQ = math.sin(_Qj)
-            sigma[_j1002] = _sigma
-            F[_j1002] = _F
-            sinQ[_j1002] = _sinQ
-        # Psi and the u-rates of (30)-(32) at the nodes
+        # node values of the pass: sigma, F_r (29) and the damper's force, sin Q
         for _j1004 in range(6):
             if _j1004 >= nq:
                 break
             _Qj = Q[_j1004]
             _Pj = P[_j1004]
             _u = u[_j1004]
-            _sigma = sigma[_j1004]
-            _sinQ = sinQ[_j1004]
+            _Psr = Psr[_j1004]
+            _x0 = _D*_u**2 + q_r
+            _sigma = _x0
+            _F = _Pj**2/(_x0**3*m) - _x0*k_d - g_s*m*math.cos(_Qj) + k_d*l0
+            _sinQ = math.sin(_Qj)
+            sigma[_j1004] = _sigma
+            F[_j1004] = _F - 2.0*_u*c*math.sqrt(_D*_Psr)/math.sqrt(m)
+            sinQ[_j1004] = _sinQ
+        # Psi and the u-rates of (30)-(32) at the nodes
+        for _j1006 in range(6):
+            if _j1006 >= nq:
+                break
+            _Qj = Q[_j1006]
+            _Pj = P[_j1006]
+            _u = u[_j1006]
+            _sigma = sigma[_j1006]
+            _sinQ = sinQ[_j1006]
             _S1F = 0.0
-            for _j1005 in range(6):
-                if _j1005 >= nq:
+            for _j1007 in range(6):
+                if _j1007 >= nq:
                     break
-                _S1F += S1[_j1004, _j1005]*F[_j1005]
+                _S1F += S1[_j1006, _j1007]*F[_j1007]
             _x1 = _S1F/_u**2
             _x2 = math.sqrt(m)
             _x3 = math.sqrt(_D)/math.sqrt(_x1)
@@ -475,67 +506,82 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_Psi > 0.0)):
                 return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
-            ft[_j1004] = _ft
-            fq[_j1004] = _fq
-            fp[_j1004] = _fp
+            ft[_j1006] = _ft
+            fq[_j1006] = _fq
+            fp[_j1006] = _fp
+            Psi[_j1006] = _Psi
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
         _wfp = 0.0
-        for _j1006 in range(6):
-            if _j1006 >= nq:
-                break
-            _wfq += w[_j1006]*fq[_j1006]
-            _wfp += w[_j1006]*fp[_j1006]
-        # the next iterate at the nodes
+        _Wpass = 0.0
         for _j1008 in range(6):
             if _j1008 >= nq:
                 break
+            _wfq += w[_j1008]*fq[_j1008]
+            _wfp += w[_j1008]*fp[_j1008]
+            _Wpass += w1[_j1008]*F[_j1008]
+        # the next iterate at the nodes
+        for _j1011 in range(6):
+            if _j1011 >= nq:
+                break
             _Sfq = 0.0
             _Sfp = 0.0
-            for _j1009 in range(6):
-                if _j1009 >= nq:
+            for _j1012 in range(6):
+                if _j1012 >= nq:
                     break
-                _Sfq += S[_j1008, _j1009]*fq[_j1009]
-                _Sfp += S[_j1008, _j1009]*fp[_j1009]
-            Q_next[_j1008] = _Sfq + q_th
-            P_next[_j1008] = _Sfp + m*q_r**2*q_thd
-        _D_next = _D
+                _Sfq += S[_j1011, _j1012]*fq[_j1012]
+                _Sfp += S[_j1011, _j1012]*fp[_j1012]
+            Q_next[_j1011] = _Sfq + q_th
+            P_next[_j1011] = _Sfp + m*q_r**2*q_thd
+        # D = q_r_lo - q_r_b, or to the leg force's zero (liftoff force)
+        _x4 = k_d*l0
+        _x5 = k_d*q_r
+        _x6 = 2.0*math.sqrt(_Wpass)*c/math.sqrt(m)
+        _x7 = -q_r_lo
+        _x8 = -_x7 - q_r
+        _D_next = (((2.0*_x4 - 2.0*_x5)**2/(_x6 + math.sqrt(4.0*_Wpass*c**2/m + 4.0*k_d*(_x4 - _x5)))**2)
+            if (liftoff == 0.0) and (_x6*math.sqrt(_x8) - k_d*(_x7 + l0) > 0.0) else (_x8))
         _n0_0 = _D_next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0))
-        for _j1010 in range(6):
-            if _j1010 >= nq:
+        for _j1013 in range(6):
+            if _j1013 >= nq:
                 break
-            _conv0 = _conv0 and abs(Q_next[_j1010] - Q[_j1010]) <= tol*(1.0)
-            Q[_j1010] = Q_next[_j1010]
-            _conv0 = (_conv0 and abs(P_next[_j1010] - P[_j1010]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            _conv0 = _conv0 and abs(Q_next[_j1013] - Q[_j1013]) <= tol*(1.0)
+            Q[_j1013] = Q_next[_j1013]
+            _conv0 = (_conv0 and abs(P_next[_j1013] - P[_j1013]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
-            P[_j1010] = P_next[_j1010]
+            P[_j1013] = P_next[_j1013]
+            Psr[_j1013] = Psi[_j1013]
         _D = _n0_0
         _passes += 1.0
     _t_end = 0.0
     _q_end = 0.0
     _p_end = 0.0
     _work = 0.0
-    for _j1011 in range(6):
-        if _j1011 >= nq:
+    for _j1014 in range(6):
+        if _j1014 >= nq:
             break
-        _t_end += w[_j1011]*ft[_j1011]
-        _q_end += w[_j1011]*fq[_j1011]
-        _p_end += w[_j1011]*fp[_j1011]
-        _work += w1[_j1011]*F[_j1011]
+        _t_end += w[_j1014]*ft[_j1014]
+        _q_end += w[_j1014]*fq[_j1014]
+        _p_end += w[_j1014]*fp[_j1014]
+        _work += w1[_j1014]*F[_j1014]
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     t_half = _t_end
     end_q_th = _q_end + q_th
-    end_q_r = q_r_lo
     end_q_rd = 2.0*math.sqrt(_D*_work)/math.sqrt(m)
-    end_q_thd = (_p_end + m*q_r**2*q_thd)/(m*q_r_lo**2)
+    _lo_q_thd = (_p_end + m*q_r**2*q_thd)/(m*q_r_lo**2)
     passes = _passes
+    # liftoff at q_r_lo, or at q_r_b + D short of it
+    _x9 = _D + q_r
+    _x10 = (_D < -q_r + q_r_lo)
+    end_q_r = ((_x9) if _x10 else (q_r_lo))
+    end_q_thd = (((_p_end + m*q_r**2*q_thd)/(_x9**2*m)) if _x10 else (_lo_q_thd))
     # every output finite, or the inputs were far outside a physical range
     if not (all_finite((t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes,))):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
@@ -600,6 +646,7 @@ def iterative_core(_a):
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         z_b_q_r: zeroth iterate: z_b_q_r
         z_b_q_th: zeroth iterate: z_b_q_th
         z_b_q_thd: zeroth iterate: z_b_q_thd
@@ -611,6 +658,8 @@ def iterative_core(_a):
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -627,11 +676,11 @@ def iterative_core(_a):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 15
-    (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, held, nodes, iterations, tol,) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
-        11, 12, 13, 14, 15, 16, 17, 18))
+    (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, c, z_b_q_r, z_b_q_th, z_b_q_thd,
+        z_lo_q_th, z_lo_q_thd, held, nodes, iterations, tol, liftoff,) = (load(_a, 0, 1, 2, 3, 4, 5, 6, 7, 8,
+        9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20))
     # compression half, k_c (report 5.2.1)
-    _c0 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+    _c0 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, c, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
     if _c0[6] != STATUS_OK:
         return _NAN11 + (_c0[6],)
@@ -647,7 +696,7 @@ def iterative_core(_a):
     g_lo_q_thd = ((bottom_q_r**2*bottom_q_thd/q_r_lo**2) if _x0 else (z_lo_q_thd))
     # decompression half, k_d (report 3.2, 5.2.2)
     _c1 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
-        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+        c, g_lo_q_th, g_lo_q_thd, nodes, iterations, tol, liftoff))
     if _c1[6] != STATUS_OK:
         return _NAN11 + (_c1[6],)
     t_decompression = _c1[0]
@@ -859,14 +908,16 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 7, 8, 9, 10)
+    (m, l0, k_c, k_d, g_s, c, q_r_lo, nodes, iterations, tol, liftoff,) = (load(p, 0, 1, 2, 3, 4, 8, 7, 9, 10,
+        11, 12))
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations,
-            tol,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0))
-            & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo
-            > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
-            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
-            & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, c, q_r_lo, nodes,
+            iterations, tol, liftoff,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((c >= 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes
+            == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0)) & ((liftoff
+            == 0.0) or (liftoff == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -881,9 +932,9 @@ def iterative_stance_zeroth_shared(x, p, out, zeroth, constant0):
     z_lo_q_th = _c0[3]
     z_lo_q_thd = _c0[4]
     # the iteration from the zeroth iterate
-    _a1 = carray(stack(19), 19)
-    store(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th,
-        z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, nodes, iterations, tol,))
+    _a1 = carray(stack(21), 21)
+    store(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, c, z_b_q_r, z_b_q_th,
+        z_b_q_thd, z_lo_q_th, z_lo_q_thd, constant0, nodes, iterations, tol, liftoff,))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -921,8 +972,8 @@ def iterative_stance_zeroth_geyer(x, p, out):
     p_r_td^2 = 2 m int F_r.
 
     Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, nodes, iterations, tol, liftoff); writes the outputs
+    below into out, in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -935,12 +986,15 @@ def iterative_stance_zeroth_geyer(x, p, out):
         k_c: leg stiffness while compressing k_c [N/m], > 0
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
             (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Writes into out:
         t_bottom: time from touchdown to the bottom [s]
@@ -965,9 +1019,9 @@ def iterative_stance_zeroth_geyer(x, p, out):
 def iterative_stance_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
     -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_geyer(row(X, i), p, row(OUT, i))
 
@@ -987,16 +1041,16 @@ def iterative_apex_return_zeroth_shared(x, p, out, iterative_stance_zeroth):
     """
     # Total ops: 3
     (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate,) = load(x, 0, 1, 2, 3, 4)
-    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8,
-        9, 10))
+    (m, l0, k_c, k_d, g_s, c, g_f, q_r_td, q_r_lo, nodes, iterations, tol, liftoff,) = (load(p, 0, 1, 2, 3, 4,
+        8, 5, 6, 7, 9, 10, 11, 12))
     # inputs: finite and inside their domains
-    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, g_f,
-            q_r_td, q_r_lo, nodes, iterations, tol,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td) < (0.5)*math.pi))
-            & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((g_f > 0.0))
-            & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0)
-            or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not (all_finite((b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate, m, l0, k_c, k_d, g_s, c, g_f,
+            q_r_td, q_r_lo, nodes, iterations, tol, liftoff,)) & ((b_y_apex >= 0.0)) & ((abs(q_th_td)
+            < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
+            & ((c >= 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
+            & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            & ((tol >= 0.0) and (tol <= 1.0)) & ((liftoff == 0.0) or (liftoff == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1050,8 +1104,8 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
     iterative_stance_zeroth_geyer.
 
     Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
-    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol); writes the outputs below into
-    out, in order, and returns
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, nodes, iterations, tol, liftoff); writes the outputs
+    below into out, in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -1070,6 +1124,7 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
         k_c: leg stiffness while compressing k_c [N/m], > 0
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
@@ -1078,6 +1133,8 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -1106,9 +1163,9 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
 def iterative_apex_return_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_geyer(row(X, i), p, row(OUT, i))
 
@@ -1129,9 +1186,9 @@ def iterative_stance_zeroth_held(x, p, out):
 def iterative_stance_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_held(row(X, i), p, row(OUT, i))
 
@@ -1153,9 +1210,9 @@ def iterative_apex_return_zeroth_held(x, p, out):
 def iterative_apex_return_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_held(row(X, i), p, row(OUT, i))
 
@@ -1176,9 +1233,9 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
 def iterative_stance_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
@@ -1200,9 +1257,9 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
 def iterative_apex_return_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
@@ -1223,9 +1280,9 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
 def iterative_stance_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
@@ -1247,9 +1304,9 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
 def iterative_apex_return_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
@@ -1270,9 +1327,9 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
 def iterative_stance_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
@@ -1294,9 +1351,9 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
 def iterative_apex_return_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
@@ -1317,9 +1374,9 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
 def iterative_stance_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
@@ -1341,9 +1398,9 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
 def iterative_apex_return_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
@@ -1364,9 +1421,9 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
 def iterative_stance_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
@@ -1388,9 +1445,9 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
 def iterative_apex_return_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
@@ -1411,9 +1468,9 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
 def iterative_stance_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
@@ -1435,9 +1492,9 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
 def iterative_apex_return_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
@@ -1458,9 +1515,9 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
 def iterative_stance_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_stance_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_stance_zeroth_geyer_vs(row(X, i), p, row(OUT, i))
 
@@ -1482,8 +1539,8 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
 def iterative_apex_return_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_apex_return_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(13), 13)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_apex_return_zeroth_geyer_vs(row(X, i), p, row(OUT, i))

@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
-#   iterative.py sha256:261dd3618e20e8ff
+#   iterative.py sha256:6c68b56d8ea0aa73
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -44,13 +44,13 @@ def iterative_compression_zeroth_shared(x, p, out, zeroth):
     """
     # Total ops: 0
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_c, g_s, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 5, 6)
+    (m, l0, k_c, g_s, c, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7)
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,))
+    if not (all_finite((q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, c, nodes, iterations, tol,))
             & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0
-            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
-            or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+            > 0.0)) & ((k_c > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
+            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # zeroth iterate (option zeroth)
     _c0 = zeroth(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td)
@@ -62,7 +62,7 @@ def iterative_compression_zeroth_shared(x, p, out, zeroth):
     z_lo_q_th = _c0[3]
     z_lo_q_thd = _c0[4]
     # compression half, k_c (report 5.2.1)
-    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, c, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
     if _c1[6] != STATUS_OK:
         return fail(out, _c1[6])
@@ -89,7 +89,7 @@ def iterative_compression_zeroth_geyer(x, p, out):
     Runs the shared body :func:`iterative_compression_zeroth_shared` with zeroth_geyer.
 
     Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
-    p = (m, l0, k_c, g_s, nodes, iterations, tol); writes the outputs below into out, in order, and returns
+    p = (m, l0, k_c, g_s, c, nodes, iterations, tol); writes the outputs below into out, in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -101,6 +101,7 @@ def iterative_compression_zeroth_geyer(x, p, out):
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
             (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
@@ -125,9 +126,9 @@ def iterative_compression_zeroth_geyer(x, p, out):
 def iterative_compression_zeroth_geyer_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_geyer(row(X, i), p, row(OUT, i))
 
@@ -149,9 +150,9 @@ def iterative_compression_zeroth_held(x, p, out):
 def iterative_compression_zeroth_held_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_held(row(X, i), p, row(OUT, i))
 
@@ -173,9 +174,9 @@ def iterative_compression_zeroth_gravity_type0(x, p, out):
 def iterative_compression_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_gravity_type0(row(X, i), p, row(OUT, i))
 
@@ -197,9 +198,9 @@ def iterative_compression_zeroth_gravity_type1(x, p, out):
 def iterative_compression_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_gravity_type1(row(X, i), p, row(OUT, i))
 
@@ -221,9 +222,9 @@ def iterative_compression_zeroth_gravity_type2(x, p, out):
 def iterative_compression_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_gravity_type2(row(X, i), p, row(OUT, i))
 
@@ -245,9 +246,9 @@ def iterative_compression_zeroth_gravity_type3(x, p, out):
 def iterative_compression_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_gravity_type3(row(X, i), p, row(OUT, i))
 
@@ -269,9 +270,9 @@ def iterative_compression_zeroth_gravity_type4(x, p, out):
 def iterative_compression_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_gravity_type4(row(X, i), p, row(OUT, i))
 
@@ -293,9 +294,9 @@ def iterative_compression_zeroth_gravity_type5(x, p, out):
 def iterative_compression_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one
     row), OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_gravity_type5(row(X, i), p, row(OUT, i))
 
@@ -317,8 +318,8 @@ def iterative_compression_zeroth_geyer_vs(x, p, out):
 def iterative_compression_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_compression_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
     OUT[i] -> STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(7), 7)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_compression_zeroth_geyer_vs(row(X, i), p, row(OUT, i))

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
 #   flight.py sha256:af908ea30b1fc141
-#   iterative.py sha256:261dd3618e20e8ff
+#   iterative.py sha256:6c68b56d8ea0aa73
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -36,8 +36,8 @@ def iterative_decompression(x, p, out):
     Report equations: 29, 30, 31, 32, 37, 41, 137, 138, 139, 140, 141, 143.
 
     Role kernel: reads x = (q_r_b, q_rd_b, q_th_b, q_thd_b) and the parameter record
-    p = (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol); writes the outputs below into out, in order, and
-    returns
+    p = (m, l0, k_d, g_s, q_r_lo, c, nodes, iterations, tol, liftoff); writes the outputs below into out, in
+    order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -50,11 +50,14 @@ def iterative_decompression(x, p, out):
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
             (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
 
     Writes into out:
         t_half: time from the start state to the end state [s]
@@ -68,17 +71,18 @@ def iterative_decompression(x, p, out):
     """
     # Total ops: 0
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7)
+    (m, l0, k_d, g_s, q_r_lo, c, nodes, iterations, tol, liftoff,) = load(p, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9)
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol,))
-            & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d > 0.0))
-            & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
-            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, c, nodes, iterations, tol,
+            liftoff,)) & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0))
+            & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((c >= 0.0)) & ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0)) & ((liftoff == 0.0) or (liftoff == 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # decompression half, k_d (report 5.2.2)
-    _c0 = (schwind_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,
-        q_r_b**2*q_thd_b/q_r_lo**2, nodes, iterations, tol))
+    _c0 = (schwind_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, c, q_th_b,
+        q_r_b**2*q_thd_b/q_r_lo**2, nodes, iterations, tol, liftoff))
     if _c0[6] != STATUS_OK:
         return fail(out, _c0[6])
     t_half = _c0[0]
@@ -98,9 +102,9 @@ def iterative_decompression(x, p, out):
 def iterative_decompression_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_decompression` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(8), 8)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(10), 10)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_decompression(row(X, i), p, row(OUT, i))
 
@@ -113,8 +117,8 @@ def iterative_decompression_apex(x, p, out):
     Report equations: 29, 30, 31, 32, 37, 41, 137, 138, 139, 140, 141, 143.
 
     Role kernel: reads x = (q_r_b, q_rd_b, q_th_b, q_thd_b) and the parameter record
-    p = (m, l0, k_d, g_s, g_f, q_r_lo, nodes, iterations, tol); writes the outputs below into out, in order,
-    and returns
+    p = (m, l0, k_d, g_s, g_f, q_r_lo, c, nodes, iterations, tol, liftoff); writes the outputs below into out,
+    in order, and returns
     the status (out all NaN unless OK).
 
     Arguments:
@@ -127,11 +131,14 @@ def iterative_decompression_apex(x, p, out):
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        c: leg damping, the radial force -c dq_r/dt in stance (0: a lossless leg) c [N s/m], >= 0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
             (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
+        liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
+            length
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
 
     Writes into out:
@@ -148,20 +155,21 @@ def iterative_decompression_apex(x, p, out):
     """
     # Total ops: 8
     (q_r_b, q_rd_b, q_th_b, q_thd_b,) = load(x, 0, 1, 2, 3)
-    (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol, g_f,) = load(p, 0, 1, 2, 3, 5, 6, 7, 8, 4)
+    (m, l0, k_d, g_s, q_r_lo, c, nodes, iterations, tol, liftoff, g_f,) = (load(p, 0, 1, 2, 3, 5, 6, 7, 8, 9,
+        10, 4))
     # inputs: finite and inside their domains
-    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol, g_f,
-            )) & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_d
-            > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((nodes == 0.0) or (nodes == 1.0)
-            or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0) and (tol <= 1.0)) & ((g_f
-            > 0.0))):
+    if not (all_finite((q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, c, nodes, iterations, tol,
+            liftoff, g_f,)) & ((q_r_b > 0.0)) & ((abs(q_th_b) < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0))
+            & ((k_d > 0.0)) & ((g_s > 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((c >= 0.0)) & ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) & ((tol >= 0.0)
+            and (tol <= 1.0)) & ((liftoff == 0.0) or (liftoff == 1.0)) & ((g_f > 0.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the half: Iterative decompression half (bottom to liftoff, k_d; converging form)
     _x0 = carray(stack(4), 4)
     store(_x0, (q_r_b, q_rd_b, q_th_b, q_thd_b,))
-    _p0 = carray(stack(8), 8)
-    store(_p0, (m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol,))
+    _p0 = carray(stack(10), 10)
+    store(_p0, (m, l0, k_d, g_s, q_r_lo, c, nodes, iterations, tol, liftoff,))
     _o0 = carray(stack(6), 6)
     _c0 = iterative_decompression(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -191,8 +199,8 @@ def iterative_decompression_apex(x, p, out):
 def iterative_decompression_apex_rows(X, P, OUT, STATUS):
     """Rows of :func:`iterative_decompression_apex` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
     STATUS[i]``."""
-    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(9), 9)
+    n, last, p = X.shape[0], P.shape[0] - 1, carray(stack(11), 11)
     for b in range(last + 1):
-        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8))
+        store(p, load(row(P, b), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10))
         for i in range(b, n if b == last else min(b + 1, n)):
             STATUS[i] = iterative_decompression_apex(row(X, i), p, row(OUT, i))

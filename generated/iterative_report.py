@@ -9,7 +9,7 @@
 #   support.py sha256:4a3d44d95d3e4300
 #   flight.py sha256:af908ea30b1fc141
 #   geyer_vs.py sha256:ef01b987d9b927b3
-#   iterative.py sha256:261dd3618e20e8ff
+#   iterative.py sha256:6c68b56d8ea0aa73
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""

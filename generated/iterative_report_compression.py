@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:4a3d44d95d3e4300
-#   iterative.py sha256:261dd3618e20e8ff
-#   iterative_report.py sha256:2dd4ac253c24cf1a
+#   iterative.py sha256:6c68b56d8ea0aa73
+#   iterative_report.py sha256:18114aff3d2f5d54
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""

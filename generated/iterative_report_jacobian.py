@@ -9,7 +9,7 @@
 #   support.py sha256:4a3d44d95d3e4300
 #   flight_jacobian.py sha256:4de4ff5a5b5282af
 #   geyer_vs_jacobian.py sha256:9f039010262c20f7
-#   iterative_jacobian.py sha256:1d41e5a9e936c9aa
+#   iterative_jacobian.py sha256:db63ce5dd50fcaf8
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""

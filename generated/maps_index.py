@@ -219,12 +219,10 @@ _repeated36 = {'name': 'tol', 'kind': 'float', 'default': 0.0, 'doc':
     0.0, 'high': 1.0, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'tolerance']}
 
-_repeated37 = [_repeated34, _repeated35, _repeated36, _repeated15]
-
-_repeated38 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
+_repeated37 = ['t_bottom', 't_stance', 'bottom_q_r', 'bottom_q_rd', 'bottom_q_th', 'bottom_q_thd',
     'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'passes']
 
-_repeated39 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
+_repeated38 = ['apex_height', 'apex_speed', 't_descent', 't_stance', 't_ascent', 'liftoff_q_r',
     'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd', 'step_length', 'foot_x', 'foot_y', 'touchdown_q_th',
     'passes']
 
@@ -495,38 +493,40 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'k_d']}}, 'fixed': {}}, {'name': 'iterative', 'title':
     'Iterative stance map (Schwind and Koditschek, converging form)', 'section': '5.2', 'equations': ['27',
     '29', '30', '31', '32', '33', '35', '37', '41', '114', '115', '116', '117', '118', '137'], 'params': ['m',
-    'l0', 'k_c', 'k_d', 'g_s'], 'options': _repeated37, 'module': 'iterative', 'summary':
+    'l0', 'k_c', 'k_d', 'g_s', 'c'], 'options': [_repeated34, _repeated35, _repeated36, _repeated15,
+    _repeated3], 'module': 'iterative', 'summary':
     'both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the radial work; '
     'k_c before the bottom, k_d after', 'roles': ['region', 'accuracy-figure'], 'specialized': ['zeroth'],
     'choices': _repeated19, 'extras': [{'name': 'passes', 'doc':
     'Picard passes run (the larger of the two halves)', 'unit': '1', 'odd': False}], 'requires': [],
     'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'iterative', 'name':
     'iterative_stance_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0',
-    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated38, 'base':
-    'iterative_stance'}, 'apex_return': {'module': 'iterative', 'name': 'iterative_apex_return_zeroth_geyer',
-    'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d',
-    'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated39, 'base':
-    'iterative_apex_return'}, 'stance_jacobian': {'module': 'iterative_jacobian', 'name':
-    'iterative_stance_jacobian_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m',
-    'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': _repeated38,
-    'base': 'iterative_stance_jacobian', 'wrt': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d']},
-    'apex_return_jacobian': {'module': 'iterative_jacobian', 'name':
-    'iterative_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
-    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'nodes',
-    'iterations', 'tol'], 'out': _repeated39, 'base': 'iterative_apex_return_jacobian', 'wrt': ['b_y_apex',
-    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k_c', 'k_d']}}, 'fixed': {}}]
+    'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'c', 'nodes', 'iterations', 'tol', 'liftoff'], 'out':
+    _repeated37, 'base': 'iterative_stance'}, 'apex_return': {'module': 'iterative', 'name':
+    'iterative_apex_return_zeroth_geyer', 'x': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground',
+    'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'c', 'nodes',
+    'iterations', 'tol', 'liftoff'], 'out': _repeated38, 'base': 'iterative_apex_return'}, 'stance_jacobian':
+    {'module': 'iterative_jacobian', 'name': 'iterative_stance_jacobian_zeroth_geyer', 'x': ['q_r_td',
+    'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f', 'q_r_td', 'q_r_lo', 'c',
+    'nodes', 'iterations', 'tol', 'liftoff'], 'out': _repeated37, 'base': 'iterative_stance_jacobian', 'wrt':
+    ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td', 'k_c', 'k_d', 'c']}, 'apex_return_jacobian': {'module':
+    'iterative_jacobian', 'name': 'iterative_apex_return_jacobian_zeroth_geyer', 'x': ['b_y_apex',
+    'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate'], 'p': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'g_f',
+    'q_r_td', 'q_r_lo', 'c', 'nodes', 'iterations', 'tol', 'liftoff'], 'out': _repeated38, 'base':
+    'iterative_apex_return_jacobian', 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate',
+    'k_c', 'k_d', 'c']}}, 'fixed': {}}]
 
-_repeated40 = {'name': 'rtol', 'kind': 'float', 'default': 1e-11, 'doc':
+_repeated39 = {'name': 'rtol', 'kind': 'float', 'default': 1e-11, 'doc':
     'relative tolerance of the DOP853 integration', 'choices': [], 'low': 1e-14, 'high': 0.001,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
 
-_repeated41 = {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
+_repeated40 = {'name': 'atol', 'kind': 'float', 'default': 1e-12, 'doc':
     'absolute tolerance of the DOP853 integration', 'choices': [], 'low': 1e-16, 'high': 0.001,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}
 
 HALVES = [{'name': 'exact-compression', 'title':
     'Exact compression half (touchdown to bottom, k_c; DOP853 integration)', 'section': '2.2', 'equations': [
-    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo', 'c'], 'options': [_repeated40, _repeated41],
+    '2', '3'], 'params': ['m', 'l0', 'k_c', 'g_s', 'q_r_lo', 'c'], 'options': [_repeated39, _repeated40],
     'module': 'exact_compression', 'summary':
     "the exact stance's compression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'touchdown', 'end': 'bottom',
@@ -535,7 +535,7 @@ HALVES = [{'name': 'exact-compression', 'title':
     'atol'], 'out': ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd']}}}, {'name':
     'exact-decompression', 'title': 'Exact decompression half (bottom to liftoff, k_d; DOP853 integration)',
     'section': '2.2', 'equations': ['2', '3'], 'params': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo', 'c'], 'options':
-    [_repeated40, _repeated41, _repeated3], 'module': 'exact_decompression', 'summary':
+    [_repeated39, _repeated40, _repeated3], 'module': 'exact_decompression', 'summary':
     "the exact stance's decompression half, the same integration split at the bottom", 'roles': [],
     'specialized': [], 'choices': {}, 'extras': [], 'whole': 'exact', 'start': 'bottom', 'end': 'liftoff',
     'requires': [], 'kernels': {'half': {'module': 'exact_decompression', 'name': 'exact_decompression', 'x':
@@ -546,14 +546,15 @@ HALVES = [{'name': 'exact-compression', 'title':
     'apex_speed', 't_half', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']}}}, {
     'name': 'iterative-compression', 'title':
     'Iterative compression half (touchdown to bottom, k_c; converging form)', 'section': '5.2.1', 'equations':
-    ['29', '30', '31', '32', '114', '115', '116', '117', '118', '123'], 'params': ['m', 'l0', 'k_c', 'g_s'],
-    'options': _repeated37, 'module': 'iterative_compression', 'summary':
+    ['29', '30', '31', '32', '114', '115', '116', '117', '118', '123'], 'params': ['m', 'l0', 'k_c', 'g_s',
+    'c'], 'options': [_repeated34, _repeated35, _repeated36, _repeated15], 'module': 'iterative_compression',
+    'summary':
     'the compression half of `iterative`: bottom leg length from the radial work, Picard passes on '
     'Gauss nodes in u', 'roles': [], 'specialized': ['zeroth'], 'choices': _repeated19, 'extras': [{'name':
     'passes', 'doc': 'Picard passes run', 'unit': '1', 'odd': False}], 'whole': 'iterative', 'start':
     'touchdown', 'end': 'bottom', 'requires': [], 'kernels': {'half': {'module': 'iterative_compression',
     'name': 'iterative_compression_zeroth_geyer', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': [
-    'm', 'l0', 'k_c', 'g_s', 'nodes', 'iterations', 'tol'], 'out': ['t_half', 'end_q_r', 'end_q_rd',
+    'm', 'l0', 'k_c', 'g_s', 'c', 'nodes', 'iterations', 'tol'], 'out': ['t_half', 'end_q_r', 'end_q_rd',
     'end_q_th', 'end_q_thd', 'passes'], 'base': 'iterative_compression'}}}, {'name':
     'iterative-report-compression', 'title':
     'Iterative compression half as printed (touchdown to bottom, k_c)', 'section': '5.2.1', 'equations': [
@@ -569,19 +570,19 @@ HALVES = [{'name': 'exact-compression', 'title':
     'end_q_th', 'end_q_thd'], 'base': 'iterative_report_compression'}}}, {'name': 'iterative-decompression',
     'title': 'Iterative decompression half (bottom to liftoff, k_d; converging form)', 'section': '5.2.2',
     'equations': ['29', '30', '31', '32', '37', '41', '137', '138', '139', '140', '141', '143'], 'params': [
-    'm', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [_repeated34, _repeated35, _repeated36], 'module':
-    'iterative_decompression', 'summary':
+    'm', 'l0', 'k_d', 'g_s', 'q_r_lo', 'c'], 'options': [_repeated34, _repeated35, _repeated36, _repeated3],
+    'module': 'iterative_decompression', 'summary':
     "the decompression half of `iterative` from any bottom state: zeroth iterate the bottom's angle "
     'and angular momentum held, liftoff p_r from the radial work', 'roles': [], 'specialized': [], 'choices':
     {}, 'extras': [{'name': 'passes', 'doc': 'Picard passes run', 'unit': '1', 'odd': False}], 'whole':
     'iterative', 'start': 'bottom', 'end': 'liftoff', 'requires': [], 'kernels': {'half': {'module':
     'iterative_decompression', 'name': 'iterative_decompression', 'x': ['q_r_b', 'q_rd_b', 'q_th_b',
-    'q_thd_b'], 'p': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': ['t_half',
-    'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd', 'passes']}, 'apex': {'module': 'iterative_decompression',
-    'name': 'iterative_decompression_apex', 'x': ['q_r_b', 'q_rd_b', 'q_th_b', 'q_thd_b'], 'p': ['m', 'l0',
-    'k_d', 'g_s', 'g_f', 'q_r_lo', 'nodes', 'iterations', 'tol'], 'out': ['apex_height', 'apex_speed',
-    't_half', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th', 'liftoff_q_thd']}}}, {'name':
-    'iterative-report-decompression', 'title':
+    'q_thd_b'], 'p': ['m', 'l0', 'k_d', 'g_s', 'q_r_lo', 'c', 'nodes', 'iterations', 'tol', 'liftoff'], 'out':
+    ['t_half', 'end_q_r', 'end_q_rd', 'end_q_th', 'end_q_thd', 'passes']}, 'apex': {'module':
+    'iterative_decompression', 'name': 'iterative_decompression_apex', 'x': ['q_r_b', 'q_rd_b', 'q_th_b',
+    'q_thd_b'], 'p': ['m', 'l0', 'k_d', 'g_s', 'g_f', 'q_r_lo', 'c', 'nodes', 'iterations', 'tol', 'liftoff'],
+    'out': ['apex_height', 'apex_speed', 't_half', 't_ascent', 'liftoff_q_r', 'liftoff_q_rd', 'liftoff_q_th',
+    'liftoff_q_thd']}}}, {'name': 'iterative-report-decompression', 'title':
     'Iterative decompression half as printed (bottom to liftoff, k_d)', 'section': '5.2.2', 'equations': [
     '137', '138', '139', '140', '141', '143', '144', '145', '146', '147', '148', '149', '150'], 'params': [
     'm', 'l0', 'k_d', 'g_s', 'q_r_lo'], 'options': [_repeated11, _repeated12], 'module':
@@ -603,8 +604,8 @@ EXACT = {'name': 'exact', 'title': 'Exact stance by numerical integration (DOP85
     'which DOP853 implementation integrates the stance (same algorithm, events and statuses)', 'choices': [{
     'value': 'compiled', 'doc': 'numba-compiled, batches in parallel'}, {'value': 'scipy', 'doc':
     "scipy's solve_ivp, the reference"}], 'low': None, 'high': None, 'at_rest_length': [], 'kernel': False,
-    'specialize': False, 'backends': {'scipy': 'slipmaps.runtime.exact.reference'}, 'roles': []}, _repeated40,
-    _repeated41, _repeated3], 'module': 'exact', 'summary':
+    'specialize': False, 'backends': {'scipy': 'slipmaps.runtime.exact.reference'}, 'roles': []}, _repeated39,
+    _repeated40, _repeated3], 'module': 'exact', 'summary':
     'the polar stance equations of motion (2)-(3) integrated with events for the bottom (k_c -> k_d), '
     'liftoff and failures: the ground truth', 'roles': [], 'specialized': [], 'choices': {}, 'extras': [],
     'requires': [], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module':

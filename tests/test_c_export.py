@@ -144,15 +144,33 @@ def test_c_kernels_match_numba(clib, case):
     assert checked > 0
 
 
-@pytest.mark.parametrize("name", [m.name for m in slipmaps.maps() if "c" in m.params and m.name != "exact"])
-def test_c_kernels_match_numba_with_leg_damping(clib, name):
-    """A map that takes the leg damping c, at 10 % of the human runner's critical damping: C equals
-    numba as at c = 0 (the other cases run the human runner, c = 0)."""
-    call = Call.of(name, slipmaps.HUMAN_RUNNER.with_(c=253.0), {})
-    checked = 0
+def _damped_cases():
+    """(name, half, options) of every map and half map that takes the leg damping c (the exact map
+    aside: not in the C library), once per value of its option liftoff if it has one."""
+    for info, half in (*((m, False) for m in slipmaps.maps()), *((h, True) for h in halves())):
+        if "c" not in info.params or info.name.startswith("exact"):
+            continue
+        names = {o.name for o in info.options}
+        for liftoff in ("force", "length") if "liftoff" in names else (None,):
+            yield info.name, half, {} if liftoff is None else {"liftoff": liftoff}
+
+
+@pytest.mark.parametrize("case", list(_damped_cases()), ids=lambda c: f"{c[0]}-{c[2] or 'default'}")
+def test_c_equals_numba_bit_for_bit_with_leg_damping(clib, case):
+    """Every map and half map that takes c, at 10 % of the critical damping, both liftoff
+    conventions, every role: the C library's values are the numba kernels', bit for bit."""
+    name, half, options = case
+    call = Call.of(name, slipmaps.HUMAN_RUNNER.with_(c=253.0), options, half=half)
     for seed, (_role, spec) in enumerate(sorted(call.kernels.items())):
-        checked += _agree(clib, spec, call.record(spec)[None, :], N_CHOICE, seed, {})
-    assert checked > 0
+        X = states(spec.x, N_CHOICE, seed)
+        P = call.record(spec)[None, :]
+        OUT, STATUS = numba_rows(spec, X, P, batch=False)
+        out_c, status_c = clib.rows(spec.name, X, P, spec.width)
+        # not vacuous: measured 0.29-0.34 of iterative's apex returns OK (most others APEX_TOO_LOW or,
+        # the damped step losing height, LIFTOFF_DOWNWARD), 0.73-1.0 of the other roles
+        assert (STATUS == 0).mean() > 0.2, (spec.name, np.bincount(STATUS))
+        np.testing.assert_array_equal(status_c, STATUS, err_msg=spec.name)
+        np.testing.assert_array_equal(out_c, OUT, err_msg=spec.name)
 
 
 def test_c_model_kernels_match_numba(clib):

@@ -732,7 +732,8 @@ def _params_sample(rng):
     l0 = rng.uniform(0.25, 1.2)
     g_s = rng.uniform(9.0, 10.0)
     k = rng.uniform(10.0, 40.0) * m * g_s / l0  # dimensionless stiffness 10-40
-    return {"m": m, "l0": l0, "k": k, "k_c": k, "k_d": k, "g_s": g_s, "g_f": rng.uniform(9.0, 10.0)}
+    # c: a lossless leg (the maps that take the leg damping read it; tests/test_iterative_damped.py)
+    return {"m": m, "l0": l0, "k": k, "k_c": k, "k_d": k, "g_s": g_s, "g_f": rng.uniform(9.0, 10.0), "c": 0.0}
 
 
 def _geyer(name: str, env) -> tuple:

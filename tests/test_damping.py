@@ -255,14 +255,22 @@ def test_damped_hop_never_gains_energy(height, speed, angle, damping):
 def test_a_map_without_c_refuses_damping_in_one_line():
     damped = HUMAN_RUNNER.with_(c=50.0)
     takers = [m.name for m in (*slipmaps.maps(), *index.halves()) if "c" in m.params]
-    assert takers == ["geyer-damped", "exact", "exact-compression", "exact-decompression"]
+    assert takers == [
+        "geyer-damped",
+        "iterative",
+        "exact",
+        "exact-compression",
+        "exact-decompression",
+        "iterative-compression",
+        "iterative-decompression",
+    ]
     apex = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35}
     calls = [
         lambda: slipmaps.apex_return("geyer", damped, **apex),
-        lambda: slipmaps.apex_return_batch("iterative", damped, **apex),
+        lambda: slipmaps.apex_return_batch("iterative-report", damped, **apex),
         lambda: slipmaps.stance("gravity-type2", damped, TOUCHDOWN),
         lambda: slipmaps.stance_jacobian("geyer", damped, TOUCHDOWN),
-        lambda: slipmaps.half_stance("iterative-compression", damped, TOUCHDOWN),
+        lambda: slipmaps.half_stance("iterative-report-compression", damped, TOUCHDOWN),
     ]
     for call in calls:
         with pytest.raises(ValueError) as err:
@@ -283,10 +291,11 @@ def test_cli_and_scenarios_refuse_damping_for_a_map_without_it(tmp_path, capsys)
     err = capsys.readouterr().err
     assert err.startswith("slipmaps compare: error: map 'geyer' does not model c") and err.count("\n") == 1
     scenario = tmp_path / "damped.toml"
-    scenario.write_text('steps = 1\nmodel = "iterative"\nplant = "exact"\n[params]\nc = 50.0\n')
+    scenario.write_text('steps = 1\nmodel = "iterative-report"\nplant = "exact"\n[params]\nc = 50.0\n')
     assert main(["run", str(scenario), "--no-figure"]) == 2
     err = capsys.readouterr().err
-    assert "map 'iterative' does not model c" in err and "Traceback" not in err and err.count("\n") == 1
+    assert "map 'iterative-report' does not model c" in err
+    assert "Traceback" not in err and err.count("\n") == 1
 
 
 # ----------------------------------------------------------------------------------------------

@@ -176,7 +176,8 @@ def test_pass_bound_is_enforced():
 
     def status(**values) -> Status:
         """The kernel's status, its layouts filled by the index's names."""
-        env = {**base, "nodes": 3.0, "tol": 0.0, **values}  # nodes: the code of 4 nodes
+        # nodes: the code of 4 nodes; liftoff: the code of "force"
+        env = {**base, "nodes": 3.0, "tol": 0.0, "liftoff": 0.0, **values}
         return Status(kernels.call_layouts(kernel, spec.x, spec.p, spec.width, env)[-1])
 
     assert status(iterations=100.0) == Status.OK

@@ -41,6 +41,7 @@ from hypothesis import strategies as st
 from slipmaps.generated import flight as g_flight
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import Status
+from slipmaps.runtime.api.params import PARAMETERS
 
 HALF_PI = math.pi / 2
 MAX_MAGNITUDE = 1e300
@@ -95,11 +96,16 @@ class Kernel:
         """The kernel at the arguments of ``env`` (by name, whatever its calling convention), with
         what a family member fixes (its row's ``fixed``: the family's options it does not expose)."""
         fixed = self.row["fixed"] if self.row else {}
-        return kernels.invoke(kernels.declaration(self.module, self.name), {**fixed, **env})
+        return kernels.invoke(kernels.declaration(self.module, self.name), {**fixed, **UNMODELLED, **env})
 
     @property
     def module(self) -> str:
         return self.scalar.py_func.__module__
+
+
+#: The value every map assumes for a parameter only some maps model (the leg damping c = 0), for
+#: the kernels that take it when an environment does not set it.
+UNMODELLED = kernels.UNMODELLED
 
 
 def _map_kernels(row: dict) -> list[Kernel]:
@@ -701,8 +707,8 @@ def run_batch(kernel: Kernel, env: dict, rows: np.ndarray) -> tuple[np.ndarray, 
     n = rows.shape[0]
     spec = kernel.row["kernels"][kernel.role]
     X = np.ascontiguousarray(rows, dtype=float)
-    env = {**kernel.row["fixed"], **env}  # what a family member fixes (as Kernel.call)
-    P = np.array([[float(env.get(f, kernels.UNMODELLED.get(f, math.nan))) for f in spec["p"]]])
+    env = {**kernel.row["fixed"], **UNMODELLED, **env}  # what a family member fixes (as Kernel.call)
+    P = np.array([[float(env.get(f, math.nan)) for f in spec["p"]]])
     out = np.empty((n, len(kernel.outputs)))
     status = np.empty(n, dtype=np.int64)
     kernel.batch(X, P, out, status)

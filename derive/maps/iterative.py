@@ -21,6 +21,19 @@ integrated exactly (a quadratic in D) each pass. The decompression half runs fro
 state with k_d to q_r = q_r_lo, where p_r_lo^2 = 2 m int F_r. The zeroth iterate is a declared
 map's bottom and liftoff states (or the held touchdown/bottom state), linear in u between the
 half's ends: the leading behaviour q_th - q_th_b ~ (sigma - q_r_b)^(1/2) of (41).
+
+The leg damping ``c`` (derive/params.py) adds the damper's force -c p_r/m to F_r
+(:func:`~.iterative_helpers.damper_force`); d(p_r^2)/dq_r = 2 m F_r holds for any F_r, so the work
+form stands, but F_r at a node now depends on p_r there. Each pass takes it at the previous pass's
+p_r: a carried node array (the decompression half's Psi, p_r = u sqrt(4 m D Psi); the compression
+half's shape Psi/Psi(1), p_r = u p_r_td sqrt(Psi/Psi(1)), so that p_r follows a new D without a
+lag). The compression half's D keeps its exact spring part, the damper's work is in the
+numerically integrated rest. Option ``liftoff`` is the exact map's (:data:`.exact.LIFTOFF`): with
+``"force"`` the decompression half ends where the leg force k_d (l0 - q_r) - c q_rd falls to 0,
+D = s^2 from the quadratic in s of :func:`~.iterative_helpers.force_liftoff` with the pass's
+W = int_0^1 F_r u du, iterated with the passes, or at q_r_lo if the force there is not negative
+(q_r_lo first, or a tie). At c = 0 every term of the damper is 0 and the lossless arithmetic is
+untouched: the values are the lossless map's, bit for bit (tests/test_iterative_damped.py).
 """
 
 from __future__ import annotations
@@ -34,11 +47,16 @@ from ..halfspec import HalfInputs, HalfSpec
 from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Lookup, Nodes, Reduce, Stage, Step, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
-from ..symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_th
+from ..symbols import g_s, k_c, k_d, l0, m, p_r, p_th, q_r, q_th
 from . import quadrature_helpers
+from .exact import LIFTOFF
 from .iterative_helpers import (
+    damper_force,
+    force_liftoff,
     held_liftoff,
     leg_length_derivatives,
+    liftoff_symbols,
+    q_r_b,
     radial_force,
     zeroth_arguments,
     zeroth_bottom,
@@ -114,19 +132,34 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
         start_q = th0 + (a["guess_q_th"] - th0) * u
         start_p = pth0 + (guess_lo - pth0) * u
     top = a["q_r"]
+    F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
+    # the carried array's zeroth iterate (the damper's, below): p_r linear in u (shape 1), or Psi
+    # near the bottom, p_r^2 = 2 m F_r(bottom) (sigma - q_r_b) = 4 m D (F_r(bottom)/2) u^2
+    psi0 = sp.S.One if compress else F_r.subs({q_r: top, q_th: th0, p_th: pth0}) / 2
     if compress:
         d0, base = top - a["guess_q_r"], top - D
     else:
         d0, base = catalog.PARAMS["q_r_lo"].symbol - top, top
-    F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
     sigma, F, psi, s1f = sym("_sigma"), sym("_F"), sym("_Psi"), sym("_S1F")
+    carried = sym("_Psr")
+    # The damper's force -c p_r/m at the nodes' p_r from the previous pass: the compression half
+    # carries the shape Psi/W (W = Psi(1), p_r^2 = 4 m D Psi u^2 = p_r_td^2 u^2 Psi/W: p_r_td is
+    # known, p_r < 0 in time), the decompression half Psi (p_r = u sqrt(4 m D Psi) at this pass's D).
+    # Either way p_r does not follow the pass's D with a lag: in the compression half Psi does (Psi(1)
+    # = p_r_td^2/(4 m D)), and carrying it made D converge at about 0.35 per pass at 20 % of the
+    # critical damping.
+    if compress:
+        node_p_r = u * m * a["q_rd"] * sp.sqrt(carried)
+    else:
+        node_p_r = u * sp.sqrt(4 * m * D * carried)
+    damper = damper_force().subs(p_r, node_p_r)
     at = {_D: D, _PSI: psi, _U: u, q_r: sigma, q_th: Q, p_th: P}
     # sin Q_j beside cos Q_j (in F_r): one sincos call per node and pass instead of a sin and a cos
     sin_q = sym("_sinQ")
     evaluate = (
         Nodes(
             nq,
-            ((Q, "Q"), (P, "P"), (u, "u")),
+            ((Q, "Q"), (P, "P"), (u, "u"), (carried, "Psr")),
             (),
             (
                 Stage(
@@ -137,8 +170,9 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
                     )
                 ),
             ),
-            ((sigma, "sigma"), (F, "F"), (sin_q, "sinQ")),
-            comment="node values of the pass: sigma, F_r (29), sin Q",
+            # F_r with the damper's force at the previous pass's p_r (+ 0 at c = 0)
+            ((sigma, "sigma"), (F + damper, "F"), (sin_q, "sinQ")),
+            comment="node values of the pass: sigma, F_r (29) and the damper's force, sin Q",
         ),
         Nodes(
             nq,
@@ -155,11 +189,12 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
                     (Guard(psi > 0, "IMAGINARY_MOMENTUM", "p_r^2 = 2 m int F_r > 0 at every node"),),
                 ),
             ),
-            ((sym("_ft"), "ft"), (sym("_fq"), "fq"), (sym("_fp"), "fp")),
+            ((sym("_ft"), "ft"), (sym("_fq"), "fq"), (sym("_fp"), "fp"), (psi, "Psi")),
             comment="Psi and the u-rates of (30)-(32) at the nodes",
         ),
     )
     sfq, sfp, wfq, wfp = sym("_Sfq"), sym("_Sfp"), sym("_wfq"), sym("_wfp")
+    work_pass = sym("_Wpass")
     if compress:  # from the touchdown end: y(u_j) = y_td + int_{u_j}^1
         new_q, new_p = th0 + wfq - sfq, pth0 + wfp - sfp
         rbar = sym("_rbar")
@@ -171,12 +206,12 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
             ((F - stiffness * (l0 - sigma), "G"),),
             comment="F_r minus its spring term",
         )
-        b, c = stiffness * (l0 - top) + 2 * rbar, (m * a["q_rd"]) ** 2 / (2 * m)
-        new_d = 2 * c / (b + sp.sqrt(b**2 + 2 * stiffness * c))
-        update_d = (spring, Reduce(rbar, "w1", "G", nq))
+        b, kinetic = stiffness * (l0 - top) + 2 * rbar, (m * a["q_rd"]) ** 2 / (2 * m)
+        new_d = 2 * kinetic / (b + sp.sqrt(b**2 + 2 * stiffness * kinetic))
+        update_d = (spring, Reduce(rbar, "w1", "G", nq), Reduce(work_pass, "w1", "F", nq))
     else:  # from the bottom: y(u_j) = y_b + int_0^{u_j}
         new_q, new_p = th0 + sfq, pth0 + sfp
-        new_d, update_d = D, ()
+        new_d, update_d = _liftoff_distance(a, top, work_pass), (Reduce(work_pass, "w1", "F", nq),)
     body = (
         Reduce(wfq, "w", "fq", nq),
         Reduce(wfp, "w", "fp", nq),
@@ -190,13 +225,23 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
             comment="the next iterate at the nodes",
         ),
         Stage(
-            ((sym("_D_next"), new_d),), comment="D = q_r_td - q_r_b from the radial work" if compress else ""
+            ((sym("_D_next"), new_d),),
+            comment="D = q_r_td - q_r_b from the radial work"
+            if compress
+            else "D = q_r_lo - q_r_b, or to the leg force's zero (liftoff force)",
         ),
     )
+    if compress:
+        body += (
+            Nodes(nq, ((psi, "Psi"),), (), (), ((psi / work_pass, "Shape"),), comment="the shape Psi/W"),
+        )
     scale_p = sp.Abs(pth0) + m * l0 * sp.sqrt(g_s * l0)
     iterate = Iterate(
         state=((D, d0),),
         arrays=(("Q", "Q0", "Q_next", sp.S.One), ("P", "P0", "P_next", scale_p)),
+        # Psi (or its shape) for the damper's force of the next pass: outside the convergence test
+        # (the force, c times it, follows Q, P and D; at c = 0 it is not used)
+        array_carry=(("Psr", "Psr0", "Shape" if compress else "Psi"),),
         nodes=nq,
         evaluate=evaluate,
         body=body,
@@ -210,12 +255,13 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
     start = Nodes(
         nq, ((u, "u"),), (), (), ((start_q, "Q0"), (start_p, "P0")), comment="the zeroth iterate at the nodes"
     )
+    start_psi = Nodes(nq, (), (), (), ((psi0, "Psr0"),), comment="Psi at the nodes, zeroth iterate")
     # Both halves: y_end = y_anchor + int_0^1 (the compression half runs toward u = 0 in time, the
     # decompression half toward u = 1; in both the u-rates point along the motion).
     t_half, q_end, p_end = sym("_t_end"), sym("_q_end"), sym("_p_end")
     sums = (Reduce(t_half, "w", "ft", nq), Reduce(q_end, "w", "fq", nq), Reduce(p_end, "w", "fp", nq))
     common = ((sym("t_half"), t_half), (sym("end_q_th"), th0 + q_end))
-    steps = (rule_tables(sym("nodes")), start, iterate, *sums)
+    steps = (rule_tables(sym("nodes")), start, start_psi, iterate, *sums)
     if compress:
         q_r_b = sym("end_q_r")
         return steps + (
@@ -232,20 +278,46 @@ def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
             ),
         )
     work, q_r_lo = sym("_work"), catalog.PARAMS["q_r_lo"].symbol
+    # the liftoff at q_r_lo as without the damper (its arithmetic, its derivatives' too), then at the
+    # leg force's zero where D stopped short of q_r_lo (liftoff "force", c > 0)
+    lo_q_thd, short = sym("_lo_q_thd"), D < q_r_lo - top
     return steps + (
         Reduce(work, "w1", "F", nq),
         Stage((), (Guard(work > 0, "NO_LIFTOFF", "p_r_lo^2 = 4 m D int_0^1 F_r u du > 0"),)),
         Stage(
             (
                 *common,
-                (sym("end_q_r"), q_r_lo),
                 (sym("end_q_rd"), sp.sqrt(4 * m * D * work) / m),
-                (sym("end_q_thd"), (pth0 + p_end) / (m * q_r_lo**2)),
+                (lo_q_thd, (pth0 + p_end) / (m * q_r_lo**2)),
                 (sym("passes"), sym("_passes")),
             ),
             comment="liftoff state: p_r_lo^2 = 2 m int F_r (work form)",
         ),
+        Stage(
+            (
+                (sym("end_q_r"), sp.Piecewise((top + D, short), (q_r_lo, True))),
+                (
+                    sym("end_q_thd"),
+                    sp.Piecewise(((pth0 + p_end) / (m * (top + D) ** 2), short), (lo_q_thd, True)),
+                ),
+            ),
+            comment="liftoff at q_r_lo, or at q_r_b + D short of it",
+        ),
     )
+
+
+def _liftoff_distance(a: dict, top: sp.Basic, work: sp.Symbol) -> sp.Basic:
+    """D of the next pass of a decompression half: q_r_lo - q_r_b, or with option liftoff "force"
+    the distance to the leg force's zero (:func:`~.iterative_helpers.force_liftoff`, with the pass's
+    W = int_0^1 F_r u du) when the leg force at q_r_lo, p_r there from the same W, is negative
+    (q_r_lo first, or a tie: q_r_lo)."""
+    q_r_lo = catalog.PARAMS["q_r_lo"].symbol
+    force, root = force_liftoff()
+    s, w = liftoff_symbols()
+    at = {q_r_b: top, w: work}
+    at_lo = force.subs(at).subs(s, sp.sqrt(q_r_lo - top))
+    pulls = sp.And(LIFTOFF.is_("force"), at_lo < 0)
+    return sp.Piecewise((root.subs(at) ** 2, pulls), (q_r_lo - top, True))
 
 
 NODES = Option(
@@ -281,7 +353,8 @@ def _polar_args(prefix: str, what: str) -> tuple[Arg, ...]:
 @cache
 def half_kernel(kind: str) -> Kernel:
     """The compression half (touchdown -> bottom, k_c; report 5.2.1) or the decompression half
-    (bottom -> liftoff at q_r_lo, k_d; report 3.2 and 5.2.2), collocation with NODES nodes."""
+    (bottom -> liftoff at q_r_lo or, option liftoff "force", the leg force's zero, k_d; report 3.2
+    and 5.2.2), collocation with NODES nodes; the leg damping c in both (module docstring)."""
     compress = kind == "compression"
     anchor = _polar_args("", "touchdown state" if compress else "bottom state")
     names = {f.name: a.symbol for f, a in zip(catalog.POLAR, anchor, strict=True)}
@@ -293,6 +366,8 @@ def half_kernel(kind: str) -> Kernel:
     params = (catalog.PARAMS["m"], catalog.PARAMS["l0"], stiffness, catalog.PARAMS["g_s"])
     if not compress:
         params += (catalog.PARAMS["q_r_lo"],)
+    params += (catalog.PARAMS["c"],)
+    options = (NODES.arg(), ITERATIONS.arg(), TOL.arg()) + (() if compress else (LIFTOFF.arg(),))
     q_r_lo = catalog.PARAMS["q_r_lo"].symbol
     at_start = {q_r: names["q_r"], q_th: names["q_th"], p_th: m * names["q_r"] ** 2 * names["q_thd"]}
     first = (
@@ -319,7 +394,7 @@ def half_kernel(kind: str) -> Kernel:
         equations=("29", "30", "31", "32", "37", "41")
         if not compress
         else ("115", "116", "117", "118", "123"),
-        args=anchor + params + guess + (NODES.arg(), ITERATIONS.arg(), TOL.arg()),
+        args=anchor + params + guess + options,
         steps=(Stage((), first), *_half_steps(kind, a)),
         outputs=outputs,
         module="iterative",
@@ -337,10 +412,10 @@ def core_kernel() -> Kernel:
     from ..catalog import PARAMS, TOUCHDOWN
 
     q_r_td, q_rd_td, q_th_td, q_thd_td = (a.symbol for a in TOUCHDOWN)
-    p = {n: PARAMS[n].symbol for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo")}
+    p = {n: PARAMS[n].symbol for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo", "c")}
     options = {o: sym(o) for o in ("nodes", "iterations", "tol")}
     compression, decompression = half_kernel("compression"), half_kernel("decompression")
-    physical = {q: p[q] for q in ("m", "l0", "g_s")}
+    physical = {q: p[q] for q in ("m", "l0", "g_s", "c")}
     steps = (
         Call(
             compression,
@@ -372,6 +447,7 @@ def core_kernel() -> Kernel:
                 "guess_q_th": sym("g_lo_q_th"),
                 "guess_q_thd": sym("g_lo_q_thd"),
                 **options,
+                LIFTOFF.name: LIFTOFF.symbol,
             },
             {
                 "t_half": "t_decompression",
@@ -400,7 +476,7 @@ def core_kernel() -> Kernel:
         args=TOUCHDOWN
         + tuple(PARAMS[n] for n in p)
         + zeroth_arguments()
-        + (NODES.arg(), ITERATIONS.arg(), TOL.arg()),
+        + (NODES.arg(), ITERATIONS.arg(), TOL.arg(), LIFTOFF.arg()),
         steps=steps,
         outputs=catalog.STANCE + Group("", (_PASSES_WHOLE,)),
         module="iterative",
@@ -414,9 +490,9 @@ def _build(inp: MapInputs) -> MapBuild:
     core = core_kernel()
     args = {
         **dict(zip((a.name for a in catalog.TOUCHDOWN), inp.touchdown, strict=True)),
-        **{n: p[n] for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo")},
+        **{n: p[n] for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo", "c")},
         **zeroth_values(),
-        **{o: inp.opt(o) for o in ("nodes", "iterations", "tol")},
+        **{o: inp.opt(o) for o in ("nodes", "iterations", "tol", LIFTOFF.name)},
     }
     steps = (
         Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
@@ -439,9 +515,9 @@ def declare_maps() -> tuple[MapSpec, ...]:
             title="Iterative stance map (Schwind and Koditschek, converging form)",
             section="5.2",
             equations=tuple(sorted(_EQUATIONS, key=int)),
-            params=("m", "l0", "k_c", "k_d", "g_s"),
+            params=("m", "l0", "k_c", "k_d", "g_s", "c"),
             build=_build,
-            options=(NODES, ITERATIONS, TOL, zeroth_option()),
+            options=(NODES, ITERATIONS, TOL, zeroth_option(), LIFTOFF),
             extras=(_PASSES_WHOLE,),
             summary="both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the "
             "radial work; k_c before the bottom, k_d after",
@@ -469,7 +545,7 @@ def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
             half_kernel("compression"),
             {
                 **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
-                **{q: p[q] for q in ("m", "l0", "k_c", "g_s")},
+                **{q: p[q] for q in ("m", "l0", "k_c", "g_s", "c")},
                 **{f"guess_{q}": sym(f"z_b_{q}") for q in ("q_r", "q_th", "q_thd")},
                 **options,
             },
@@ -488,10 +564,10 @@ def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
             half_kernel("decompression"),
             {
                 **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
-                **{q: p[q] for q in ("m", "l0", "k_d", "g_s", "q_r_lo")},
+                **{q: p[q] for q in ("m", "l0", "k_d", "g_s", "q_r_lo", "c")},
                 "guess_q_th": guess_q_th,
                 "guess_q_thd": guess_q_thd,
-                **{o: inp.opt(o) for o in ("nodes", "iterations", "tol")},
+                **{o: inp.opt(o) for o in ("nodes", "iterations", "tol", LIFTOFF.name)},
             },
             _HALF_OUTPUTS,
             comment="decompression half, k_d (report 5.2.2)",
@@ -510,7 +586,7 @@ def declare_halves() -> tuple[HalfSpec, ...]:
             equations=("29", "30", "31", "32", "114", "115", "116", "117", "118", "123"),
             whole="iterative",
             start="touchdown",
-            params=("m", "l0", "k_c", "g_s"),
+            params=("m", "l0", "k_c", "g_s", "c"),
             build=_compression_half,
             options=(NODES, ITERATIONS, TOL, zeroth_option()),
             extras=(_PASSES,),
@@ -524,9 +600,9 @@ def declare_halves() -> tuple[HalfSpec, ...]:
             equations=("29", "30", "31", "32", "37", "41", "137", "138", "139", "140", "141", "143"),
             whole="iterative",
             start="bottom",
-            params=("m", "l0", "k_d", "g_s", "q_r_lo"),
+            params=("m", "l0", "k_d", "g_s", "q_r_lo", "c"),
             build=_decompression_half,
-            options=(NODES, ITERATIONS, TOL),
+            options=(NODES, ITERATIONS, TOL, LIFTOFF),
             extras=(_PASSES,),
             summary="the decompression half of `iterative` from any bottom state: zeroth iterate the "
             "bottom's angle and angular momentum held, liftoff p_r from the radial work",

@@ -43,7 +43,7 @@ from .. import catalog
 from ..ir import Arg, Call, Field, Group, Kernel, Stage, Switch, sym
 from ..mapspec import MapSpec, Option
 from ..model import mechanics
-from ..symbols import E, k_c, k_d, m, p_r, p_th, q_r, q_r_td, q_th, q_th_td, t
+from ..symbols import E, c, k_c, k_d, l0, m, p_r, p_th, q_r, q_r_td, q_rd, q_th, q_th_td, t
 
 __all__ = [
     "sigma",
@@ -80,6 +80,9 @@ __all__ = [
     "compression_step",
     "next_radial_momentum",
     "radial_force",
+    "damper_force",
+    "force_liftoff",
+    "liftoff_symbols",
     "HELD",
     "zeroth_maps",
     "zeroth_option",
@@ -336,6 +339,39 @@ def next_radial_momentum(stiffness=k_d, energy=E, sign=1):
 def radial_force(stiffness: sp.Symbol) -> sp.Basic:
     """F_r = dp_r/dt of (29) with the half's stiffness: p_th^2/(m q_r^3) + k (l0 - q_r) - m g_s cos q_th."""
     return mechanics.hamiltonian_vector_field(stiffness)[2]
+
+
+@cache
+def damper_force(damping=c) -> sp.Basic:
+    """The leg damper's radial force in the momenta, the term it adds to F_r = dp_r/dt: m times its
+    term of the polar field (:func:`~..model.mechanics.stance_polar_damping`) with q_rd = p_r/m,
+    i.e. -damping p_r/m (outward, > 0, while the leg compresses)."""
+    term = mechanics.stance_polar_damping(damping)[1]
+    return sp.simplify(m * term.subs(q_rd, p_r / m))
+
+
+def liftoff_symbols() -> tuple[sp.Symbol, sp.Symbol]:
+    """``s`` and ``W`` of :func:`force_liftoff`."""
+    return sp.Symbol("s", positive=True), sp.Symbol("W", positive=True)
+
+
+@cache
+def force_liftoff(stiffness=k_d, damping=c) -> tuple[sp.Basic, sp.Basic]:
+    """Where the leg force k (l0 - q_r) + (damper's force) of a decompression half falls to 0, in the
+    half's variables: ``(leg force, s)`` with q_r = q_r_b + s^2 (s = sqrt(D), D the distance from the
+    bottom) and p_r = s sqrt(4 m W) (the work form at the end, W = int_0^1 F_r u du), in the symbols
+    ``q_r_b``, ``W`` and ``s`` (:func:`liftoff_symbols`); the root is the positive root of the quadratic
+    in s (below l0), written without the cancellation of -b + sqrt(b^2 + ...) (checked against
+    ``solve``)."""
+    s_, w_ = liftoff_symbols()
+    leg = stiffness * (l0 - q_r) + damper_force(damping)
+    force = leg.subs({q_r: q_r_b + s_**2, p_r: s_ * sp.sqrt(4 * m * w_)})
+    a2, a1, a0 = sp.Poly(sp.expand(force), s_).all_coeffs()
+    root = 2 * a0 / (-a1 + sp.sqrt(a1**2 - 4 * a2 * a0))  # the root of a2 < 0 < a0 that is > 0
+    # the other root of solve's two is negative (their product a0/a2 < 0 below l0)
+    if not any(sp.simplify(sp.radsimp(r - root)) == 0 for r in sp.solve(force, s_)):
+        raise RuntimeError(f"force liftoff: {root} is not a root of {force}")
+    return force, root
 
 
 #: The zeroth-iterate choice that holds the touchdown (compression) or bottom (decompression) state.
