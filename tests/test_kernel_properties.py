@@ -41,7 +41,6 @@ from hypothesis import strategies as st
 from slipmaps.generated import flight as g_flight
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import Status
-from slipmaps.runtime.api.params import PARAMETERS
 
 HALF_PI = math.pi / 2
 MAX_MAGNITUDE = 1e300
