@@ -484,13 +484,20 @@ def core_kernel() -> Kernel:
     )
 
 
+def _parameters(kernel: Kernel, given) -> dict:
+    """The parameters ``kernel`` takes from the build's ``given`` (name -> expression: the
+    declaration's parameters), in its order; its other arguments (the start state, the guesses, the
+    options) the caller binds, and an argument left unbound is refused at generation."""
+    return {a.name: given[a.name] for a in kernel.args if a.name in given}
+
+
 def _build(inp: MapInputs) -> MapBuild:
     q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
     p = inp.params
     core = core_kernel()
     args = {
         **dict(zip((a.name for a in catalog.TOUCHDOWN), inp.touchdown, strict=True)),
-        **{n: p[n] for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo", "c")},
+        **_parameters(core, p),
         **zeroth_values(),
         **{o: inp.opt(o) for o in ("nodes", "iterations", "tol", LIFTOFF.name)},
     }
@@ -545,7 +552,7 @@ def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
             half_kernel("compression"),
             {
                 **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
-                **{q: p[q] for q in ("m", "l0", "k_c", "g_s", "c")},
+                **_parameters(half_kernel("compression"), p),
                 **{f"guess_{q}": sym(f"z_b_{q}") for q in ("q_r", "q_th", "q_thd")},
                 **options,
             },
@@ -564,7 +571,7 @@ def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
             half_kernel("decompression"),
             {
                 **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
-                **{q: p[q] for q in ("m", "l0", "k_d", "g_s", "q_r_lo", "c")},
+                **_parameters(half_kernel("decompression"), p),
                 "guess_q_th": guess_q_th,
                 "guess_q_thd": guess_q_thd,
                 **{o: inp.opt(o) for o in ("nodes", "iterations", "tol", LIFTOFF.name)},
