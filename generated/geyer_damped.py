@@ -138,14 +138,14 @@ def geyer_damped_stance(x, p, out):
     """Geyer et al.'s map with leg damping (damped radial oscillator per half): touchdown state -> bottom and
     liftoff states.
 
-    Report equations: 4, 7, 17, 18, 19, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
 
     Not in the report: (4) with the damper -c q_rd, linearised to rho'' + 2 delta rho' +
     omega_n^2 rho = omega^2 - g_s / l0 (delta = c / (2 m), omega_n^2 = k / m + 3 omega^2),
     solved from the touchdown state with k_c and from the bottom with k_d; the bottom in closed
     form; the leg angle (18)-(19) integrated over the damped rho; liftoff where the leg force or
     q_r - q_r_lo reaches 0 (option liftoff), by Newton's method safeguarded by bisection; option
-    gravity adds type 3 or 4 of section 4 on each half, as geyer-vs does.
+    gravity adds a virtual gravity effect of section 4 (types 0-4) on each half.
 
     Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, liftoff, gravity, iterations, tol); writes the outputs
@@ -166,9 +166,10 @@ def geyer_damped_stance(x, p, out):
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
             length
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
-            [t_b, t_lo], as in geyer-vs); each half runs with its mean momentum, the rates with the momentum
-            at that instant: 0 = none, 1 = type3, 2 = type4
+        gravity: option gravity: virtual gravity effect on p_th per half (report section 4 on [t_td, t_b] and
+            [t_b, t_lo], as geyer-vs's types 3-4): (48) from the torque at each half's two ends with the
+            type's leg length; each half runs with its mean momentum, the rates with the momentum at that
+            instant: 0 = none, 1 = type0, 2 = type1, 3 = type2, 4 = type3, 5 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
@@ -190,7 +191,7 @@ def geyer_damped_stance(x, p, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 248
+    # Total ops: 341
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, k_d, g_s, c, q_r_lo, liftoff, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 8, 7, 9,
         10, 11, 12))
@@ -199,8 +200,9 @@ def geyer_damped_stance(x, p, out):
             iterations, tol,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
             > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0)) & ((q_r_lo
             <= l0) and (q_r_lo > 0.0)) & ((liftoff == 0.0) or (liftoff == 1.0)) & ((gravity == 0.0)
-            or (gravity == 1.0) or (gravity == 2.0)) & ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+            or (gravity == 1.0) or (gravity == 2.0) or (gravity == 3.0) or (gravity == 4.0) or (gravity
+            == 5.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the touchdown angular momentum; delta = c / (2 m)
     p_td = m*q_r_td**2*q_thd_td
@@ -322,28 +324,58 @@ def geyer_damped_stance(x, p, out):
             i_P_new1 = 0.0
             i_P_new2 = 0.0
         elif gravity == 1.0:
-            # eq (65) on each half
-            _x36 = g_s*m
-            _x37 = _x36*i_bottom_q_r*math.sin(i_bottom_q_th)
-            i_P_new1 = (0.5)*i_t_bottom*(_x36*q_r_td*math.sin(q_th_td) + _x37)
-            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x36*i_liftoff_q_r*math.sin(i_liftoff_q_th) + _x37)
+            # eq (48) on each half at the rest length l0, as (49)
+            _x36 = g_s*l0*m
+            _x37 = _x36*math.sin(i_bottom_q_th)
+            i_P_new1 = (0.5)*i_t_bottom*(_x36*math.sin(q_th_td) + _x37)
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x36*math.sin(i_liftoff_q_th) + _x37)
         elif gravity == 2.0:
-            # eq (76) on each half, the average leg length of the damped rho(t) on it
-            _x38 = delta**2
-            _x39 = (l0*(i_c_a + 1.0 + (i_c_A_c*(delta + i_exp_b*(-delta*i_cos_b + i_c_omega_D*i_sin_b))
-                + i_c_B_s*(i_c_omega_D - i_exp_b*(delta*i_sin_b + i_c_omega_D*i_cos_b)))/(i_t_bottom*(_x38
+            # eq (48) on each half at (l0 + q_r_b)/2, as (52)
+            _x38 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
+            _x39 = _x38*math.sin(i_bottom_q_th)
+            i_P_new1 = (0.5)*i_t_bottom*(_x38*math.sin(q_th_td) + _x39)
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x38*math.sin(i_liftoff_q_th) + _x39)
+        elif gravity == 3.0:
+            # eq (48) on each half at the stance-average leg length of the damped rho(t), as (62)
+            _x40 = delta**2
+            _x41 = (l0*(i_c_a + 1.0 + (i_c_A_c*(delta + i_exp_b*(-delta*i_cos_b + i_c_omega_D*i_sin_b))
+                + i_c_B_s*(i_c_omega_D - i_exp_b*(delta*i_sin_b + i_c_omega_D*i_cos_b)))/(i_t_bottom*(_x40
                 + i_c_omega_D**2))))
-            _x40 = (l0*(i_d_a + 1.0 + (i_d_A_c*(delta + i_exp_t*(-delta*i_cos_t + i_d_omega_D*i_sin_t))
-                + i_d_B_s*(i_d_omega_D - i_exp_t*(delta*i_sin_t + i_cos_t*i_d_omega_D)))/(i_tau*(_x38
+            _x42 = (l0*(i_d_a + 1.0 + (i_d_A_c*(delta + i_exp_t*(-delta*i_cos_t + i_d_omega_D*i_sin_t))
+                + i_d_B_s*(i_d_omega_D - i_exp_t*(delta*i_sin_t + i_cos_t*i_d_omega_D)))/(i_tau*(_x40
                 + i_d_omega_D**2))))
-            _x41 = math.sin(i_bottom_q_th)
-            _x42 = g_s*m
-            _x43 = _x39*_x42
-            _x44 = _x40*_x42
-            _i_L1 = _x39
-            _i_L2 = _x40
-            i_P_new1 = (0.5)*i_t_bottom*(_x41*_x43 + _x43*math.sin(q_th_td))
-            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x41*_x44 + _x44*math.sin(i_liftoff_q_th))
+            _x43 = -i_t_bottom + i_t_stance
+            _x44 = (_x41*i_t_bottom + _x42*_x43)/i_t_stance
+            _x45 = _x44*g_s*m
+            _x46 = _x45*math.sin(i_bottom_q_th)
+            _i_L1 = _x41
+            _i_L2 = _x42
+            _i_L = _x44
+            i_P_new1 = (0.5)*i_t_bottom*(_x45*math.sin(q_th_td) + _x46)
+            i_P_new2 = (0.5)*_x43*(_x45*math.sin(i_liftoff_q_th) + _x46)
+        elif gravity == 4.0:
+            # eq (65) on each half
+            _x47 = g_s*m
+            _x48 = _x47*i_bottom_q_r*math.sin(i_bottom_q_th)
+            i_P_new1 = (0.5)*i_t_bottom*(_x47*q_r_td*math.sin(q_th_td) + _x48)
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x47*i_liftoff_q_r*math.sin(i_liftoff_q_th) + _x48)
+        elif gravity == 5.0:
+            # eq (76) on each half, the average leg length of the damped rho(t) on it
+            _x49 = delta**2
+            _x50 = (l0*(i_c_a + 1.0 + (i_c_A_c*(delta + i_exp_b*(-delta*i_cos_b + i_c_omega_D*i_sin_b))
+                + i_c_B_s*(i_c_omega_D - i_exp_b*(delta*i_sin_b + i_c_omega_D*i_cos_b)))/(i_t_bottom*(_x49
+                + i_c_omega_D**2))))
+            _x51 = (l0*(i_d_a + 1.0 + (i_d_A_c*(delta + i_exp_t*(-delta*i_cos_t + i_d_omega_D*i_sin_t))
+                + i_d_B_s*(i_d_omega_D - i_exp_t*(delta*i_sin_t + i_cos_t*i_d_omega_D)))/(i_tau*(_x49
+                + i_d_omega_D**2))))
+            _x52 = math.sin(i_bottom_q_th)
+            _x53 = g_s*m
+            _x54 = _x50*_x53
+            _x55 = _x51*_x53
+            _i_L1 = _x50
+            _i_L2 = _x51
+            i_P_new1 = (0.5)*i_t_bottom*(_x52*_x54 + _x54*math.sin(q_th_td))
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x52*_x55 + _x55*math.sin(i_liftoff_q_th))
         else:
             return fail(out, STATUS_INVALID_INPUT)
         _n0_0 = i_P_new1
@@ -392,7 +424,7 @@ def geyer_damped_state_at(x, p, out):
     """Geyer et al.'s map with leg damping (damped radial oscillator per half): the polar state a time t after
     touchdown.
 
-    Report equations: 4, 7, 17, 18, 19, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
 
     Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, liftoff, gravity, iterations, tol); writes the outputs
@@ -414,9 +446,10 @@ def geyer_damped_state_at(x, p, out):
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
             length
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
-            [t_b, t_lo], as in geyer-vs); each half runs with its mean momentum, the rates with the momentum
-            at that instant: 0 = none, 1 = type3, 2 = type4
+        gravity: option gravity: virtual gravity effect on p_th per half (report section 4 on [t_td, t_b] and
+            [t_b, t_lo], as geyer-vs's types 3-4): (48) from the torque at each half's two ends with the
+            type's leg length; each half runs with its mean momentum, the rates with the momentum at that
+            instant: 0 = none, 1 = type0, 2 = type1, 3 = type2, 4 = type3, 5 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
@@ -429,7 +462,7 @@ def geyer_damped_state_at(x, p, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 370
+    # Total ops: 463
     (t, q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3, 4)
     (m, l0, k_c, k_d, g_s, c, q_r_lo, liftoff, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 8, 7, 9,
         10, 11, 12))
@@ -438,9 +471,9 @@ def geyer_damped_state_at(x, p, out):
             gravity, iterations, tol,)) & ((t >= 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td)
             < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
             & ((c >= 0.0)) & ((q_r_lo <= l0) and (q_r_lo > 0.0)) & ((liftoff == 0.0) or (liftoff == 1.0))
-            & ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) & ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
-            and (tol <= 1.0))):
+            & ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0) or (gravity == 3.0) or (gravity
+            == 4.0) or (gravity == 5.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the touchdown angular momentum; delta = c / (2 m)
     p_td = m*q_r_td**2*q_thd_td
@@ -562,28 +595,58 @@ def geyer_damped_state_at(x, p, out):
             i_P_new1 = 0.0
             i_P_new2 = 0.0
         elif gravity == 1.0:
-            # eq (65) on each half
-            _x36 = g_s*m
-            _x37 = _x36*i_bottom_q_r*math.sin(i_bottom_q_th)
-            i_P_new1 = (0.5)*i_t_bottom*(_x36*q_r_td*math.sin(q_th_td) + _x37)
-            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x36*i_liftoff_q_r*math.sin(i_liftoff_q_th) + _x37)
+            # eq (48) on each half at the rest length l0, as (49)
+            _x36 = g_s*l0*m
+            _x37 = _x36*math.sin(i_bottom_q_th)
+            i_P_new1 = (0.5)*i_t_bottom*(_x36*math.sin(q_th_td) + _x37)
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x36*math.sin(i_liftoff_q_th) + _x37)
         elif gravity == 2.0:
-            # eq (76) on each half, the average leg length of the damped rho(t) on it
-            _x38 = delta**2
-            _x39 = (l0*(i_c_a + 1.0 + (i_c_A_c*(delta + i_exp_b*(-delta*i_cos_b + i_c_omega_D*i_sin_b))
-                + i_c_B_s*(i_c_omega_D - i_exp_b*(delta*i_sin_b + i_c_omega_D*i_cos_b)))/(i_t_bottom*(_x38
+            # eq (48) on each half at (l0 + q_r_b)/2, as (52)
+            _x38 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
+            _x39 = _x38*math.sin(i_bottom_q_th)
+            i_P_new1 = (0.5)*i_t_bottom*(_x38*math.sin(q_th_td) + _x39)
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x38*math.sin(i_liftoff_q_th) + _x39)
+        elif gravity == 3.0:
+            # eq (48) on each half at the stance-average leg length of the damped rho(t), as (62)
+            _x40 = delta**2
+            _x41 = (l0*(i_c_a + 1.0 + (i_c_A_c*(delta + i_exp_b*(-delta*i_cos_b + i_c_omega_D*i_sin_b))
+                + i_c_B_s*(i_c_omega_D - i_exp_b*(delta*i_sin_b + i_c_omega_D*i_cos_b)))/(i_t_bottom*(_x40
                 + i_c_omega_D**2))))
-            _x40 = (l0*(i_d_a + 1.0 + (i_d_A_c*(delta + i_exp_t*(-delta*i_cos_t + i_d_omega_D*i_sin_t))
-                + i_d_B_s*(i_d_omega_D - i_exp_t*(delta*i_sin_t + i_cos_t*i_d_omega_D)))/(i_tau*(_x38
+            _x42 = (l0*(i_d_a + 1.0 + (i_d_A_c*(delta + i_exp_t*(-delta*i_cos_t + i_d_omega_D*i_sin_t))
+                + i_d_B_s*(i_d_omega_D - i_exp_t*(delta*i_sin_t + i_cos_t*i_d_omega_D)))/(i_tau*(_x40
                 + i_d_omega_D**2))))
-            _x41 = math.sin(i_bottom_q_th)
-            _x42 = g_s*m
-            _x43 = _x39*_x42
-            _x44 = _x40*_x42
-            _i_L1 = _x39
-            _i_L2 = _x40
-            i_P_new1 = (0.5)*i_t_bottom*(_x41*_x43 + _x43*math.sin(q_th_td))
-            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x41*_x44 + _x44*math.sin(i_liftoff_q_th))
+            _x43 = -i_t_bottom + i_t_stance
+            _x44 = (_x41*i_t_bottom + _x42*_x43)/i_t_stance
+            _x45 = _x44*g_s*m
+            _x46 = _x45*math.sin(i_bottom_q_th)
+            _i_L1 = _x41
+            _i_L2 = _x42
+            _i_L = _x44
+            i_P_new1 = (0.5)*i_t_bottom*(_x45*math.sin(q_th_td) + _x46)
+            i_P_new2 = (0.5)*_x43*(_x45*math.sin(i_liftoff_q_th) + _x46)
+        elif gravity == 4.0:
+            # eq (65) on each half
+            _x47 = g_s*m
+            _x48 = _x47*i_bottom_q_r*math.sin(i_bottom_q_th)
+            i_P_new1 = (0.5)*i_t_bottom*(_x47*q_r_td*math.sin(q_th_td) + _x48)
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x47*i_liftoff_q_r*math.sin(i_liftoff_q_th) + _x48)
+        elif gravity == 5.0:
+            # eq (76) on each half, the average leg length of the damped rho(t) on it
+            _x49 = delta**2
+            _x50 = (l0*(i_c_a + 1.0 + (i_c_A_c*(delta + i_exp_b*(-delta*i_cos_b + i_c_omega_D*i_sin_b))
+                + i_c_B_s*(i_c_omega_D - i_exp_b*(delta*i_sin_b + i_c_omega_D*i_cos_b)))/(i_t_bottom*(_x49
+                + i_c_omega_D**2))))
+            _x51 = (l0*(i_d_a + 1.0 + (i_d_A_c*(delta + i_exp_t*(-delta*i_cos_t + i_d_omega_D*i_sin_t))
+                + i_d_B_s*(i_d_omega_D - i_exp_t*(delta*i_sin_t + i_cos_t*i_d_omega_D)))/(i_tau*(_x49
+                + i_d_omega_D**2))))
+            _x52 = math.sin(i_bottom_q_th)
+            _x53 = g_s*m
+            _x54 = _x50*_x53
+            _x55 = _x51*_x53
+            _i_L1 = _x50
+            _i_L2 = _x51
+            i_P_new1 = (0.5)*i_t_bottom*(_x52*_x54 + _x54*math.sin(q_th_td))
+            i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x52*_x55 + _x55*math.sin(i_liftoff_q_th))
         else:
             return fail(out, STATUS_INVALID_INPUT)
         _n0_0 = i_P_new1
@@ -608,41 +671,41 @@ def geyer_damped_state_at(x, p, out):
     liftoff_q_th = i_liftoff_q_th
     liftoff_q_thd = i_liftoff_q_thd
     # the damped solution of the half that holds t; the rate with the momentum at t
-    _x45 = i_c_omega_D*t
-    _x46 = math.cos(_x45)
-    _x47 = math.exp(-delta*t)
-    _x48 = _x47*i_c_A_c
-    _x49 = math.sin(_x45)
-    _x50 = _x47*i_c_B_s
-    _x51 = _x46*_x48 + _x49*_x50 + i_c_a + 1.0
-    _x52 = (i_t_bottom > t)
-    _x53 = -i_t_bottom + t
-    _x54 = _x53*i_d_omega_D
-    _x55 = math.cos(_x54)
-    _x56 = math.exp(-_x53*delta)
-    _x57 = _x56*i_d_A_c
-    _x58 = math.sin(_x54)
-    _x59 = _x56*i_d_B_s
-    _x60 = _x55*_x57 + _x58*_x59 + i_d_a + 1.0
-    _x61 = _x46*delta
-    _x62 = _x49*delta
-    _x63 = _x49*i_c_omega_D
-    _x64 = _x55*delta
-    _x65 = _x58*delta
-    _x66 = _x58*i_d_omega_D
-    _x67 = delta**2
-    _x68 = 2.0*delta
-    _x69 = l0**-2
-    q_r = ((_x51*l0) if _x52 else (_x60*l0))
-    q_rd = ((l0*(_x46*_x47*i_c_B_s*i_c_omega_D - _x48*_x61 - _x48*_x63 - _x50*_x62)) if _x52
-        else (l0*(_x55*_x56*i_d_B_s*i_d_omega_D - _x57*_x64 - _x57*_x66 - _x59*_x65)))
-    q_th = ((i_omega_c*(t*(1.0 - 2.0*i_c_a) + (2.0*_x47*(i_c_A_c*(_x61 - _x63) + i_c_B_s*(_x46*i_c_omega_D
-        + _x62)) - _x68*i_c_A_c - 2.0*i_c_B_s*i_c_omega_D)/(_x67 + i_c_omega_D**2)) + q_th_td) if _x52
-        else (i_bottom_q_th + i_omega_d*(_x53*(1.0 - 2.0*i_d_a) + (2.0*_x56*(i_d_A_c*(_x64 - _x66)
-        + i_d_B_s*(_x55*i_d_omega_D + _x65)) - _x68*i_d_A_c - 2.0*i_d_B_s*i_d_omega_D)/(_x67
+    _x56 = i_c_omega_D*t
+    _x57 = math.cos(_x56)
+    _x58 = math.exp(-delta*t)
+    _x59 = _x58*i_c_A_c
+    _x60 = math.sin(_x56)
+    _x61 = _x58*i_c_B_s
+    _x62 = _x57*_x59 + _x60*_x61 + i_c_a + 1.0
+    _x63 = (i_t_bottom > t)
+    _x64 = -i_t_bottom + t
+    _x65 = _x64*i_d_omega_D
+    _x66 = math.cos(_x65)
+    _x67 = math.exp(-_x64*delta)
+    _x68 = _x67*i_d_A_c
+    _x69 = math.sin(_x65)
+    _x70 = _x67*i_d_B_s
+    _x71 = _x66*_x68 + _x69*_x70 + i_d_a + 1.0
+    _x72 = _x57*delta
+    _x73 = _x60*delta
+    _x74 = _x60*i_c_omega_D
+    _x75 = _x66*delta
+    _x76 = _x69*delta
+    _x77 = _x69*i_d_omega_D
+    _x78 = delta**2
+    _x79 = 2.0*delta
+    _x80 = l0**-2
+    q_r = ((_x62*l0) if _x63 else (_x71*l0))
+    q_rd = ((l0*(_x57*_x58*i_c_B_s*i_c_omega_D - _x59*_x72 - _x59*_x74 - _x61*_x73)) if _x63
+        else (l0*(_x66*_x67*i_d_B_s*i_d_omega_D - _x68*_x75 - _x68*_x77 - _x70*_x76)))
+    q_th = ((i_omega_c*(t*(1.0 - 2.0*i_c_a) + (2.0*_x58*(i_c_A_c*(_x72 - _x74) + i_c_B_s*(_x57*i_c_omega_D
+        + _x73)) - _x79*i_c_A_c - 2.0*i_c_B_s*i_c_omega_D)/(_x78 + i_c_omega_D**2)) + q_th_td) if _x63
+        else (i_bottom_q_th + i_omega_d*(_x64*(1.0 - 2.0*i_d_a) + (2.0*_x67*(i_d_A_c*(_x75 - _x77)
+        + i_d_B_s*(_x66*i_d_omega_D + _x76)) - _x79*i_d_A_c - 2.0*i_d_B_s*i_d_omega_D)/(_x78
         + i_d_omega_D**2))))
-    q_thd = (((_x69/_x51**2) if _x52 else (_x69/_x60**2))*((P_c_compression*t/i_t_bottom + p_td) if _x52
-        else (P_c_decompression*_x53/(-i_t_bottom + i_t_stance) + i_p_b))/m)
+    q_thd = (((_x80/_x62**2) if _x63 else (_x80/_x71**2))*((P_c_compression*t/i_t_bottom + p_td) if _x63
+        else (P_c_decompression*_x64/(-i_t_bottom + i_t_stance) + i_p_b))/m)
     # every output finite, or the inputs were far outside a physical range
     if not (all_finite((q_r, q_rd, q_th, q_thd,))):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -666,7 +729,7 @@ def geyer_damped_apex_return(x, p, out):
     """Apex-return map: exact flights, stance by Geyer et al.'s map with leg damping (damped radial oscillator
     per half).
 
-    Report equations: 4, 7, 17, 18, 19, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
 
     Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, liftoff, gravity, iterations, tol); writes the outputs
@@ -695,9 +758,10 @@ def geyer_damped_apex_return(x, p, out):
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         liftoff: option liftoff: where a damped leg lifts off (the same liftoff at c = 0): 0 = force, 1 =
             length
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
-            [t_b, t_lo], as in geyer-vs); each half runs with its mean momentum, the rates with the momentum
-            at that instant: 0 = none, 1 = type3, 2 = type4
+        gravity: option gravity: virtual gravity effect on p_th per half (report section 4 on [t_td, t_b] and
+            [t_b, t_lo], as geyer-vs's types 3-4): (48) from the torque at each half's two ends with the
+            type's leg length; each half runs with its mean momentum, the rates with the momentum at that
+            instant: 0 = none, 1 = type0, 2 = type1, 3 = type2, 4 = type3, 5 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
@@ -733,8 +797,9 @@ def geyer_damped_apex_return(x, p, out):
             < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
             & ((c >= 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo
             > 0.0)) & ((liftoff == 0.0) or (liftoff == 1.0)) & ((gravity == 0.0) or (gravity == 1.0)
-            or (gravity == 2.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+            or (gravity == 2.0) or (gravity == 3.0) or (gravity == 4.0) or (gravity == 5.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))

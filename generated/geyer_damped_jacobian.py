@@ -294,7 +294,7 @@ def geyer_damped_stance_jacobian(x, p, out):
     """Geyer et al.'s map with leg damping (damped radial oscillator per half): stance outputs and their
     derivatives with respect to the touchdown state and the stiffness.
 
-    Report equations: 4, 7, 17, 18, 19, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -313,7 +313,7 @@ def geyer_damped_stance_jacobian(x, p, out):
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 2154
+    # Total ops: 2945
     (q_r_td, q_rd_td, q_th_td, q_thd_td,) = load(x, 0, 1, 2, 3)
     (m, l0, k_c, k_d, g_s, c, q_r_lo, liftoff, gravity, iterations, tol,) = (load(p, 0, 1, 2, 3, 4, 8, 7, 9,
         10, 11, 12))
@@ -322,8 +322,9 @@ def geyer_damped_stance_jacobian(x, p, out):
             iterations, tol,)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((abs(q_th_td) < (0.5)*math.pi)) & ((m
             > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0)) & ((c >= 0.0)) & ((q_r_lo
             <= l0) and (q_r_lo > 0.0)) & ((liftoff == 0.0) or (liftoff == 1.0)) & ((gravity == 0.0)
-            or (gravity == 1.0) or (gravity == 2.0)) & ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+            or (gravity == 1.0) or (gravity == 2.0) or (gravity == 3.0) or (gravity == 4.0) or (gravity
+            == 5.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the touchdown angular momentum; delta = c / (2 m)
     _x0 = m*q_r_td**2
@@ -955,211 +956,490 @@ def geyer_damped_stance_jacobian(x, p, out):
             d_i_P_new2__k_d = 0.0
             d_i_P_new2__c = 0.0
         elif gravity == 1.0:
-            # eq (65) on each half
-            _x126 = g_s*m
+            # eq (48) on each half at the rest length l0, as (49)
+            _x126 = g_s*l0*m
             _x127 = _x126*math.sin(i_bottom_q_th)
-            _x128 = _x127*i_bottom_q_r
-            _x129 = _x126*math.sin(q_th_td)
-            _x130 = _x129*q_r_td
-            _x131 = (0.5)*i_t_bottom
-            i_P_new1 = _x131*(_x128 + _x130)
-            _pd__60 = _x127*_x131
-            _x132 = _x126*_x131
-            _x133 = i_bottom_q_r*math.cos(i_bottom_q_th)
-            _pd__61 = _x132*_x133
-            _x134 = (0.5)*_x128
-            _pd__62 = (0.5)*_x130 + _x134
-            d_i_P_new1__q_r_td = (_pd__60*d_i_bottom_q_r__q_r_td + _pd__61*d_i_bottom_q_th__q_r_td
-                + _pd__62*d_i_t_bottom__q_r_td + _x129*_x131)
-            d_i_P_new1__q_rd_td = (_pd__60*d_i_bottom_q_r__q_rd_td + _pd__61*d_i_bottom_q_th__q_rd_td
-                + _pd__62*d_i_t_bottom__q_rd_td)
-            d_i_P_new1__q_th_td = (_pd__60*d_i_bottom_q_r__q_th_td + _pd__61*d_i_bottom_q_th__q_th_td
-                + _pd__62*d_i_t_bottom__q_th_td + _x132*q_r_td*math.cos(q_th_td))
-            d_i_P_new1__q_thd_td = (_pd__60*d_i_bottom_q_r__q_thd_td + _pd__61*d_i_bottom_q_th__q_thd_td
-                + _pd__62*d_i_t_bottom__q_thd_td)
-            d_i_P_new1__k_c = (_pd__60*d_i_bottom_q_r__k_c + _pd__61*d_i_bottom_q_th__k_c
-                + _pd__62*d_i_t_bottom__k_c)
-            d_i_P_new1__k_d = (_pd__60*d_i_bottom_q_r__k_d + _pd__61*d_i_bottom_q_th__k_d
-                + _pd__62*d_i_t_bottom__k_d)
-            d_i_P_new1__c = _pd__60*d_i_bottom_q_r__c + _pd__61*d_i_bottom_q_th__c + _pd__62*d_i_t_bottom__c
-            _x135 = _x126*math.sin(i_liftoff_q_th)
-            _x136 = _x135*i_liftoff_q_r
-            _x137 = -0.5*i_t_bottom + (0.5)*i_t_stance
-            i_P_new2 = _x137*(_x128 + _x136)
-            _pd__63 = _x127*_x137
-            _x138 = _x126*_x137
-            _pd__64 = _x133*_x138
-            _pd__65 = _x135*_x137
-            _pd__66 = _x138*i_liftoff_q_r*math.cos(i_liftoff_q_th)
-            _x139 = _x134 + (0.5)*_x136
-            _pd__67 = -_x139
-            _pd__68 = _x139
-            d_i_P_new2__q_r_td = (_pd__63*d_i_bottom_q_r__q_r_td + _pd__64*d_i_bottom_q_th__q_r_td
-                + _pd__65*d_i_liftoff_q_r__q_r_td + _pd__66*d_i_liftoff_q_th__q_r_td
-                + _pd__67*d_i_t_bottom__q_r_td + _pd__68*d_i_t_stance__q_r_td)
-            d_i_P_new2__q_rd_td = (_pd__63*d_i_bottom_q_r__q_rd_td + _pd__64*d_i_bottom_q_th__q_rd_td
-                + _pd__65*d_i_liftoff_q_r__q_rd_td + _pd__66*d_i_liftoff_q_th__q_rd_td
-                + _pd__67*d_i_t_bottom__q_rd_td + _pd__68*d_i_t_stance__q_rd_td)
-            d_i_P_new2__q_th_td = (_pd__63*d_i_bottom_q_r__q_th_td + _pd__64*d_i_bottom_q_th__q_th_td
-                + _pd__65*d_i_liftoff_q_r__q_th_td + _pd__66*d_i_liftoff_q_th__q_th_td
-                + _pd__67*d_i_t_bottom__q_th_td + _pd__68*d_i_t_stance__q_th_td)
-            d_i_P_new2__q_thd_td = (_pd__63*d_i_bottom_q_r__q_thd_td + _pd__64*d_i_bottom_q_th__q_thd_td
-                + _pd__65*d_i_liftoff_q_r__q_thd_td + _pd__66*d_i_liftoff_q_th__q_thd_td
-                + _pd__67*d_i_t_bottom__q_thd_td + _pd__68*d_i_t_stance__q_thd_td)
-            d_i_P_new2__k_c = (_pd__63*d_i_bottom_q_r__k_c + _pd__64*d_i_bottom_q_th__k_c
-                + _pd__65*d_i_liftoff_q_r__k_c + _pd__66*d_i_liftoff_q_th__k_c + _pd__67*d_i_t_bottom__k_c
-                + _pd__68*d_i_t_stance__k_c)
-            d_i_P_new2__k_d = (_pd__63*d_i_bottom_q_r__k_d + _pd__64*d_i_bottom_q_th__k_d
-                + _pd__65*d_i_liftoff_q_r__k_d + _pd__66*d_i_liftoff_q_th__k_d + _pd__67*d_i_t_bottom__k_d
-                + _pd__68*d_i_t_stance__k_d)
-            d_i_P_new2__c = (_pd__63*d_i_bottom_q_r__c + _pd__64*d_i_bottom_q_th__c
-                + _pd__65*d_i_liftoff_q_r__c + _pd__66*d_i_liftoff_q_th__c + _pd__67*d_i_t_bottom__c
-                + _pd__68*d_i_t_stance__c)
+            _x128 = _x126*math.sin(q_th_td)
+            _x129 = (0.5)*i_t_bottom
+            i_P_new1 = _x129*(_x127 + _x128)
+            _x130 = math.cos(i_bottom_q_th)
+            _x131 = _x126*_x129
+            _pd__60 = _x130*_x131
+            _x132 = (0.5)*_x127
+            _pd__61 = (0.5)*_x128 + _x132
+            d_i_P_new1__q_r_td = _pd__60*d_i_bottom_q_th__q_r_td + _pd__61*d_i_t_bottom__q_r_td
+            d_i_P_new1__q_rd_td = _pd__60*d_i_bottom_q_th__q_rd_td + _pd__61*d_i_t_bottom__q_rd_td
+            d_i_P_new1__q_th_td = (_pd__60*d_i_bottom_q_th__q_th_td + _pd__61*d_i_t_bottom__q_th_td
+                + _x131*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = _pd__60*d_i_bottom_q_th__q_thd_td + _pd__61*d_i_t_bottom__q_thd_td
+            d_i_P_new1__k_c = _pd__60*d_i_bottom_q_th__k_c + _pd__61*d_i_t_bottom__k_c
+            d_i_P_new1__k_d = _pd__60*d_i_bottom_q_th__k_d + _pd__61*d_i_t_bottom__k_d
+            d_i_P_new1__c = _pd__60*d_i_bottom_q_th__c + _pd__61*d_i_t_bottom__c
+            _x133 = _x126*math.sin(i_liftoff_q_th)
+            _x134 = -0.5*i_t_bottom + (0.5)*i_t_stance
+            i_P_new2 = _x134*(_x127 + _x133)
+            _x135 = _x126*_x134
+            _pd__62 = _x130*_x135
+            _pd__63 = _x135*math.cos(i_liftoff_q_th)
+            _x136 = _x132 + (0.5)*_x133
+            _pd__64 = -_x136
+            _pd__65 = _x136
+            d_i_P_new2__q_r_td = (_pd__62*d_i_bottom_q_th__q_r_td + _pd__63*d_i_liftoff_q_th__q_r_td
+                + _pd__64*d_i_t_bottom__q_r_td + _pd__65*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_pd__62*d_i_bottom_q_th__q_rd_td + _pd__63*d_i_liftoff_q_th__q_rd_td
+                + _pd__64*d_i_t_bottom__q_rd_td + _pd__65*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_pd__62*d_i_bottom_q_th__q_th_td + _pd__63*d_i_liftoff_q_th__q_th_td
+                + _pd__64*d_i_t_bottom__q_th_td + _pd__65*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_pd__62*d_i_bottom_q_th__q_thd_td + _pd__63*d_i_liftoff_q_th__q_thd_td
+                + _pd__64*d_i_t_bottom__q_thd_td + _pd__65*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_pd__62*d_i_bottom_q_th__k_c + _pd__63*d_i_liftoff_q_th__k_c
+                + _pd__64*d_i_t_bottom__k_c + _pd__65*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_pd__62*d_i_bottom_q_th__k_d + _pd__63*d_i_liftoff_q_th__k_d
+                + _pd__64*d_i_t_bottom__k_d + _pd__65*d_i_t_stance__k_d)
+            d_i_P_new2__c = (_pd__62*d_i_bottom_q_th__c + _pd__63*d_i_liftoff_q_th__c
+                + _pd__64*d_i_t_bottom__c + _pd__65*d_i_t_stance__c)
         elif gravity == 2.0:
+            # eq (48) on each half at (l0 + q_r_b)/2, as (52)
+            _x137 = math.sin(i_bottom_q_th)
+            _x138 = g_s*m
+            _x139 = _x138*((0.5)*i_bottom_q_r + (0.5)*l0)
+            _x140 = _x137*_x139
+            _x141 = math.sin(q_th_td)
+            _x142 = _x139*_x141
+            _x143 = (0.5)*i_t_bottom
+            i_P_new1 = _x143*(_x140 + _x142)
+            _x144 = (0.5)*_x138
+            _x145 = _x137*_x144
+            _pd__66 = _x143*(_x141*_x144 + _x145)
+            _x146 = math.cos(i_bottom_q_th)
+            _x147 = _x139*_x143
+            _pd__67 = _x146*_x147
+            _x148 = (0.5)*_x140
+            _pd__68 = (0.5)*_x142 + _x148
+            d_i_P_new1__q_r_td = (_pd__66*d_i_bottom_q_r__q_r_td + _pd__67*d_i_bottom_q_th__q_r_td
+                + _pd__68*d_i_t_bottom__q_r_td)
+            d_i_P_new1__q_rd_td = (_pd__66*d_i_bottom_q_r__q_rd_td + _pd__67*d_i_bottom_q_th__q_rd_td
+                + _pd__68*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_pd__66*d_i_bottom_q_r__q_th_td + _pd__67*d_i_bottom_q_th__q_th_td
+                + _pd__68*d_i_t_bottom__q_th_td + _x147*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_pd__66*d_i_bottom_q_r__q_thd_td + _pd__67*d_i_bottom_q_th__q_thd_td
+                + _pd__68*d_i_t_bottom__q_thd_td)
+            d_i_P_new1__k_c = (_pd__66*d_i_bottom_q_r__k_c + _pd__67*d_i_bottom_q_th__k_c
+                + _pd__68*d_i_t_bottom__k_c)
+            d_i_P_new1__k_d = (_pd__66*d_i_bottom_q_r__k_d + _pd__67*d_i_bottom_q_th__k_d
+                + _pd__68*d_i_t_bottom__k_d)
+            d_i_P_new1__c = _pd__66*d_i_bottom_q_r__c + _pd__67*d_i_bottom_q_th__c + _pd__68*d_i_t_bottom__c
+            _x149 = math.sin(i_liftoff_q_th)
+            _x150 = _x139*_x149
+            _x151 = -0.5*i_t_bottom + (0.5)*i_t_stance
+            i_P_new2 = _x151*(_x140 + _x150)
+            _pd__69 = _x151*(_x144*_x149 + _x145)
+            _x152 = _x139*_x151
+            _pd__70 = _x146*_x152
+            _pd__71 = _x152*math.cos(i_liftoff_q_th)
+            _x153 = _x148 + (0.5)*_x150
+            _pd__72 = -_x153
+            _pd__73 = _x153
+            d_i_P_new2__q_r_td = (_pd__69*d_i_bottom_q_r__q_r_td + _pd__70*d_i_bottom_q_th__q_r_td
+                + _pd__71*d_i_liftoff_q_th__q_r_td + _pd__72*d_i_t_bottom__q_r_td
+                + _pd__73*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_pd__69*d_i_bottom_q_r__q_rd_td + _pd__70*d_i_bottom_q_th__q_rd_td
+                + _pd__71*d_i_liftoff_q_th__q_rd_td + _pd__72*d_i_t_bottom__q_rd_td
+                + _pd__73*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_pd__69*d_i_bottom_q_r__q_th_td + _pd__70*d_i_bottom_q_th__q_th_td
+                + _pd__71*d_i_liftoff_q_th__q_th_td + _pd__72*d_i_t_bottom__q_th_td
+                + _pd__73*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_pd__69*d_i_bottom_q_r__q_thd_td + _pd__70*d_i_bottom_q_th__q_thd_td
+                + _pd__71*d_i_liftoff_q_th__q_thd_td + _pd__72*d_i_t_bottom__q_thd_td
+                + _pd__73*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_pd__69*d_i_bottom_q_r__k_c + _pd__70*d_i_bottom_q_th__k_c
+                + _pd__71*d_i_liftoff_q_th__k_c + _pd__72*d_i_t_bottom__k_c + _pd__73*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_pd__69*d_i_bottom_q_r__k_d + _pd__70*d_i_bottom_q_th__k_d
+                + _pd__71*d_i_liftoff_q_th__k_d + _pd__72*d_i_t_bottom__k_d + _pd__73*d_i_t_stance__k_d)
+            d_i_P_new2__c = (_pd__69*d_i_bottom_q_r__c + _pd__70*d_i_bottom_q_th__c
+                + _pd__71*d_i_liftoff_q_th__c + _pd__72*d_i_t_bottom__c + _pd__73*d_i_t_stance__c)
+        elif gravity == 3.0:
+            # eq (48) on each half at the stance-average leg length of the damped rho(t), as (62)
+            _x154 = -delta*i_cos_b + i_c_omega_D*i_sin_b
+            _x155 = _x154*i_exp_b + delta
+            _x156 = delta*i_sin_b + i_c_omega_D*i_cos_b
+            _x157 = -_x156*i_exp_b + i_c_omega_D
+            _x158 = _x155*i_c_A_c + _x157*i_c_B_s
+            _x159 = (1.0/i_t_bottom)
+            _x160 = delta**2
+            _x161 = _x160 + i_c_omega_D**2
+            _x162 = (1.0/_x161)
+            _x163 = _x159*_x162
+            _x164 = l0*(_x158*_x163 + i_c_a + 1.0)
+            _i_L1 = _x164
+            _x165 = _x163*l0
+            _pd__74 = _x155*_x165
+            _pd__75 = _x157*_x165
+            _x166 = i_c_A_c*i_exp_b
+            _x167 = -i_cos_b*i_exp_b + 1.0
+            _x168 = 2.0*_x158*_x159*_x162**2
+            _pd__76 = l0*(_x159*_x162*(_x166*i_sin_b + _x167*i_c_B_s) - _x168*i_c_omega_D)
+            _x169 = i_c_B_s*i_exp_b
+            _pd__77 = _x165*(-_x166*delta - _x169*i_c_omega_D)
+            _pd__78 = _x165*(_x154*i_c_A_c - _x156*i_c_B_s)
+            _pd__79 = _x165*(-_x169*delta + i_c_A_c*i_c_omega_D*i_exp_b)
+            _pd__80 = -_x158*_x159**2*_x162*l0
+            _d_i_L1__q_r_td = (_pd__74*d_i_c_A_c__q_r_td + _pd__75*d_i_c_B_s__q_r_td
+                + _pd__76*d_i_c_omega_D__q_r_td + _pd__77*d_i_cos_b__q_r_td + _pd__78*d_i_exp_b__q_r_td
+                + _pd__79*d_i__s__q_r_td + _pd__80*d_i_t_bottom__q_r_td + d_i_c_a__q_r_td*l0)
+            _d_i_L1__q_rd_td = (-_pd__74*d_i_c_a__q_rd_td + _pd__75*d_i_c_B_s__q_rd_td
+                + _pd__76*d_i_c_omega_D__q_rd_td + _pd__77*d_i_cos_b__q_rd_td + _pd__78*d_i_exp_b__q_rd_td
+                + _pd__79*d_i__s__q_rd_td + _pd__80*d_i_t_bottom__q_rd_td + d_i_c_a__q_rd_td*l0)
+            _d_i_L1__q_th_td = (-_pd__74*d_i_c_a__q_th_td + _pd__75*d_i_c_B_s__q_th_td
+                + _pd__76*d_i_c_omega_D__q_th_td + _pd__77*d_i_cos_b__q_th_td + _pd__78*d_i_exp_b__q_th_td
+                + _pd__79*d_i__s__q_th_td + _pd__80*d_i_t_bottom__q_th_td + d_i_c_a__q_th_td*l0)
+            _d_i_L1__q_thd_td = (-_pd__74*d_i_c_a__q_thd_td + _pd__75*d_i_c_B_s__q_thd_td
+                + _pd__76*d_i_c_omega_D__q_thd_td + _pd__77*d_i_cos_b__q_thd_td + _pd__78*d_i_exp_b__q_thd_td
+                + _pd__79*d_i__s__q_thd_td + _pd__80*d_i_t_bottom__q_thd_td + d_i_c_a__q_thd_td*l0)
+            _d_i_L1__k_c = (-_pd__74*d_i_c_a__k_c + _pd__75*d_i_c_B_s__k_c + _pd__76*d_i_c_omega_D__k_c
+                + _pd__77*d_i_cos_b__k_c + _pd__78*d_i_exp_b__k_c + _pd__79*d_i__s__k_c
+                + _pd__80*d_i_t_bottom__k_c + d_i_c_a__k_c*l0)
+            _d_i_L1__k_d = (-_pd__74*d_i_c_a__k_d + _pd__75*d_i_c_B_s__k_d + _pd__76*d_i_c_omega_D__k_d
+                + _pd__77*d_i_cos_b__k_d + _pd__78*d_i_exp_b__k_d + _pd__79*d_i__s__k_d
+                + _pd__80*d_i_t_bottom__k_d + d_i_c_a__k_d*l0)
+            _x170 = d_delta__c*l0
+            _d_i_L1__c = (-_pd__74*d_i_c_a__c + _pd__75*d_i_c_B_s__c + _pd__76*d_i_c_omega_D__c
+                + _pd__77*d_i_cos_b__c + _pd__78*d_i_exp_b__c + _pd__79*d_i__s__c + _pd__80*d_i_t_bottom__c
+                + _x170*(_x159*_x162*(_x167*i_c_A_c - _x169*i_sin_b) - _x168*delta) + d_i_c_a__c*l0)
+            _x171 = -delta*i_cos_t + i_d_omega_D*i_sin_t
+            _x172 = _x171*i_exp_t + delta
+            _x173 = delta*i_sin_t + i_cos_t*i_d_omega_D
+            _x174 = -_x173*i_exp_t + i_d_omega_D
+            _x175 = _x172*i_d_A_c + _x174*i_d_B_s
+            _x176 = (1.0/i_tau)
+            _x177 = _x160 + i_d_omega_D**2
+            _x178 = (1.0/_x177)
+            _x179 = _x176*_x178
+            _x180 = l0*(_x175*_x179 + i_d_a + 1.0)
+            _i_L2 = _x180
+            _x181 = i_d_A_c*i_exp_t
+            _x182 = i_d_B_s*i_exp_t
+            _x183 = _x179*l0
+            _pd__81 = _x183*(-_x181*delta - _x182*i_d_omega_D)
+            _pd__82 = _x172*_x183
+            _pd__83 = _x174*_x183
+            _x184 = -i_cos_t*i_exp_t + 1.0
+            _x185 = 2.0*_x175*_x176*_x178**2
+            _pd__84 = l0*(_x176*_x178*(_x181*i_sin_t + _x184*i_d_B_s) - _x185*i_d_omega_D)
+            _pd__85 = _x183*(_x171*i_d_A_c - _x173*i_d_B_s)
+            _pd__86 = _x183*(-_x182*delta + i_d_A_c*i_d_omega_D*i_exp_t)
+            _pd__87 = -_x175*_x176**2*_x178*l0
+            _d_i_L2__q_r_td = (_pd__81*d_i_cos_t__q_r_td + _pd__82*d_i_d_A_c__q_r_td
+                + _pd__83*d_i_d_B_s__q_r_td + _pd__84*d_i_d_omega_D__q_r_td + _pd__85*d_i_exp_t__q_r_td
+                + _pd__86*d_i_sin_t__q_r_td + _pd__87*d_i_tau__q_r_td + d_i_d_a__q_r_td*l0)
+            _d_i_L2__q_rd_td = (_pd__81*d_i_cos_t__q_rd_td + _pd__82*d_i_d_A_c__q_rd_td
+                + _pd__83*d_i_d_B_s__q_rd_td + _pd__84*d_i_d_omega_D__q_rd_td + _pd__85*d_i_exp_t__q_rd_td
+                + _pd__86*d_i_sin_t__q_rd_td + _pd__87*d_i_tau__q_rd_td + d_i_d_a__q_rd_td*l0)
+            _d_i_L2__q_th_td = (_pd__81*d_i_cos_t__q_th_td + _pd__82*d_i_d_A_c__q_th_td
+                + _pd__83*d_i_d_B_s__q_th_td + _pd__84*d_i_d_omega_D__q_th_td + _pd__85*d_i_exp_t__q_th_td
+                + _pd__86*d_i_sin_t__q_th_td + _pd__87*d_i_tau__q_th_td + d_i_d_a__q_th_td*l0)
+            _d_i_L2__q_thd_td = (_pd__81*d_i_cos_t__q_thd_td + _pd__82*d_i_d_A_c__q_thd_td
+                + _pd__83*d_i_d_B_s__q_thd_td + _pd__84*d_i_d_omega_D__q_thd_td + _pd__85*d_i_exp_t__q_thd_td
+                + _pd__86*d_i_sin_t__q_thd_td + _pd__87*d_i_tau__q_thd_td + d_i_d_a__q_thd_td*l0)
+            _d_i_L2__k_c = (_pd__81*d_i_cos_t__k_c + _pd__82*d_i_d_A_c__k_c + _pd__83*d_i_d_B_s__k_c
+                + _pd__84*d_i_d_omega_D__k_c + _pd__85*d_i_exp_t__k_c + _pd__86*d_i_sin_t__k_c
+                + _pd__87*d_i_tau__k_c + d_i_d_a__k_c*l0)
+            _d_i_L2__k_d = (_pd__81*d_i_cos_t__k_d + _pd__82*d_i_d_A_c__k_d + _pd__83*d_i_d_B_s__k_d
+                + _pd__84*d_i_d_omega_D__k_d + _pd__85*d_i_exp_t__k_d + _pd__86*d_i_sin_t__k_d
+                + _pd__87*d_i_tau__k_d + d_i_d_a__k_d*l0)
+            _d_i_L2__c = (_pd__81*d_i_cos_t__c + _pd__82*d_i_d_A_c__c + _pd__83*d_i_d_B_s__c
+                + _pd__84*d_i_d_omega_D__c + _pd__85*d_i_exp_t__c + _pd__86*d_i_sin_t__c + _pd__87*d_i_tau__c
+                + _x170*(_x176*_x178*(-_x182*i_sin_t + _x184*i_d_A_c) - _x185*delta) + d_i_d_a__c*l0)
+            _x186 = (1.0/i_t_stance)
+            _x187 = -i_t_bottom + i_t_stance
+            _x188 = _x164*i_t_bottom + _x180*_x187
+            _x189 = _x186*_x188
+            _i_L = _x189
+            _pd__88 = _x186*i_t_bottom
+            _pd__89 = _x186*_x187
+            _pd__90 = _x186*(_x164 - _x180)
+            _pd__91 = _x180*_x186 - _x186**2*_x188
+            _d_i_L__q_r_td = (_d_i_L1__q_r_td*_pd__88 + _d_i_L2__q_r_td*_pd__89 + _pd__90*d_i_t_bottom__q_r_td
+                + _pd__91*d_i_t_stance__q_r_td)
+            _d_i_L__q_rd_td = (_d_i_L1__q_rd_td*_pd__88 + _d_i_L2__q_rd_td*_pd__89
+                + _pd__90*d_i_t_bottom__q_rd_td + _pd__91*d_i_t_stance__q_rd_td)
+            _d_i_L__q_th_td = (_d_i_L1__q_th_td*_pd__88 + _d_i_L2__q_th_td*_pd__89
+                + _pd__90*d_i_t_bottom__q_th_td + _pd__91*d_i_t_stance__q_th_td)
+            _d_i_L__q_thd_td = (_d_i_L1__q_thd_td*_pd__88 + _d_i_L2__q_thd_td*_pd__89
+                + _pd__90*d_i_t_bottom__q_thd_td + _pd__91*d_i_t_stance__q_thd_td)
+            _d_i_L__k_c = (_d_i_L1__k_c*_pd__88 + _d_i_L2__k_c*_pd__89 + _pd__90*d_i_t_bottom__k_c
+                + _pd__91*d_i_t_stance__k_c)
+            _d_i_L__k_d = (_d_i_L1__k_d*_pd__88 + _d_i_L2__k_d*_pd__89 + _pd__90*d_i_t_bottom__k_d
+                + _pd__91*d_i_t_stance__k_d)
+            _d_i_L__c = (_d_i_L1__c*_pd__88 + _d_i_L2__c*_pd__89 + _pd__90*d_i_t_bottom__c
+                + _pd__91*d_i_t_stance__c)
+            _x190 = g_s*m
+            _x191 = _x190*math.sin(i_bottom_q_th)
+            _x192 = _x189*_x191
+            _x193 = _x190*math.sin(q_th_td)
+            _x194 = _x189*_x193
+            _x195 = (0.5)*i_t_bottom
+            i_P_new1 = _x195*(_x192 + _x194)
+            _pd__92 = _x195*(_x191 + _x193)
+            _x196 = math.cos(i_bottom_q_th)
+            _x197 = _x189*_x190
+            _x198 = _x195*_x197
+            _pd__93 = _x196*_x198
+            _x199 = (0.5)*_x192
+            _pd__94 = (0.5)*_x194 + _x199
+            d_i_P_new1__q_r_td = (_d_i_L__q_r_td*_pd__92 + _pd__93*d_i_bottom_q_th__q_r_td
+                + _pd__94*d_i_t_bottom__q_r_td)
+            d_i_P_new1__q_rd_td = (_d_i_L__q_rd_td*_pd__92 + _pd__93*d_i_bottom_q_th__q_rd_td
+                + _pd__94*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_d_i_L__q_th_td*_pd__92 + _pd__93*d_i_bottom_q_th__q_th_td
+                + _pd__94*d_i_t_bottom__q_th_td + _x198*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_d_i_L__q_thd_td*_pd__92 + _pd__93*d_i_bottom_q_th__q_thd_td
+                + _pd__94*d_i_t_bottom__q_thd_td)
+            d_i_P_new1__k_c = _d_i_L__k_c*_pd__92 + _pd__93*d_i_bottom_q_th__k_c + _pd__94*d_i_t_bottom__k_c
+            d_i_P_new1__k_d = _d_i_L__k_d*_pd__92 + _pd__93*d_i_bottom_q_th__k_d + _pd__94*d_i_t_bottom__k_d
+            d_i_P_new1__c = _d_i_L__c*_pd__92 + _pd__93*d_i_bottom_q_th__c + _pd__94*d_i_t_bottom__c
+            _x200 = _x190*math.sin(i_liftoff_q_th)
+            _x201 = _x189*_x200
+            _x202 = (0.5)*_x187
+            i_P_new2 = _x202*(_x192 + _x201)
+            _pd__95 = _x202*(_x191 + _x200)
+            _x203 = _x197*_x202
+            _pd__96 = _x196*_x203
+            _pd__97 = _x203*math.cos(i_liftoff_q_th)
+            _x204 = _x199 + (0.5)*_x201
+            _pd__98 = -_x204
+            _pd__99 = _x204
+            d_i_P_new2__q_r_td = (_d_i_L__q_r_td*_pd__95 + _pd__96*d_i_bottom_q_th__q_r_td
+                + _pd__97*d_i_liftoff_q_th__q_r_td + _pd__98*d_i_t_bottom__q_r_td
+                + _pd__99*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_d_i_L__q_rd_td*_pd__95 + _pd__96*d_i_bottom_q_th__q_rd_td
+                + _pd__97*d_i_liftoff_q_th__q_rd_td + _pd__98*d_i_t_bottom__q_rd_td
+                + _pd__99*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_d_i_L__q_th_td*_pd__95 + _pd__96*d_i_bottom_q_th__q_th_td
+                + _pd__97*d_i_liftoff_q_th__q_th_td + _pd__98*d_i_t_bottom__q_th_td
+                + _pd__99*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_d_i_L__q_thd_td*_pd__95 + _pd__96*d_i_bottom_q_th__q_thd_td
+                + _pd__97*d_i_liftoff_q_th__q_thd_td + _pd__98*d_i_t_bottom__q_thd_td
+                + _pd__99*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_d_i_L__k_c*_pd__95 + _pd__96*d_i_bottom_q_th__k_c
+                + _pd__97*d_i_liftoff_q_th__k_c + _pd__98*d_i_t_bottom__k_c + _pd__99*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_d_i_L__k_d*_pd__95 + _pd__96*d_i_bottom_q_th__k_d
+                + _pd__97*d_i_liftoff_q_th__k_d + _pd__98*d_i_t_bottom__k_d + _pd__99*d_i_t_stance__k_d)
+            d_i_P_new2__c = (_d_i_L__c*_pd__95 + _pd__96*d_i_bottom_q_th__c + _pd__97*d_i_liftoff_q_th__c
+                + _pd__98*d_i_t_bottom__c + _pd__99*d_i_t_stance__c)
+        elif gravity == 4.0:
+            # eq (65) on each half
+            _x205 = g_s*m
+            _x206 = _x205*math.sin(i_bottom_q_th)
+            _x207 = _x206*i_bottom_q_r
+            _x208 = _x205*math.sin(q_th_td)
+            _x209 = _x208*q_r_td
+            _x210 = (0.5)*i_t_bottom
+            i_P_new1 = _x210*(_x207 + _x209)
+            _pd__100 = _x206*_x210
+            _x211 = _x205*_x210
+            _x212 = i_bottom_q_r*math.cos(i_bottom_q_th)
+            _pd__101 = _x211*_x212
+            _x213 = (0.5)*_x207
+            _pd__102 = (0.5)*_x209 + _x213
+            d_i_P_new1__q_r_td = (_pd__100*d_i_bottom_q_r__q_r_td + _pd__101*d_i_bottom_q_th__q_r_td
+                + _pd__102*d_i_t_bottom__q_r_td + _x208*_x210)
+            d_i_P_new1__q_rd_td = (_pd__100*d_i_bottom_q_r__q_rd_td + _pd__101*d_i_bottom_q_th__q_rd_td
+                + _pd__102*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_pd__100*d_i_bottom_q_r__q_th_td + _pd__101*d_i_bottom_q_th__q_th_td
+                + _pd__102*d_i_t_bottom__q_th_td + _x211*q_r_td*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_pd__100*d_i_bottom_q_r__q_thd_td + _pd__101*d_i_bottom_q_th__q_thd_td
+                + _pd__102*d_i_t_bottom__q_thd_td)
+            d_i_P_new1__k_c = (_pd__100*d_i_bottom_q_r__k_c + _pd__101*d_i_bottom_q_th__k_c
+                + _pd__102*d_i_t_bottom__k_c)
+            d_i_P_new1__k_d = (_pd__100*d_i_bottom_q_r__k_d + _pd__101*d_i_bottom_q_th__k_d
+                + _pd__102*d_i_t_bottom__k_d)
+            d_i_P_new1__c = (_pd__100*d_i_bottom_q_r__c + _pd__101*d_i_bottom_q_th__c
+                + _pd__102*d_i_t_bottom__c)
+            _x214 = _x205*math.sin(i_liftoff_q_th)
+            _x215 = _x214*i_liftoff_q_r
+            _x216 = -0.5*i_t_bottom + (0.5)*i_t_stance
+            i_P_new2 = _x216*(_x207 + _x215)
+            _pd__103 = _x206*_x216
+            _x217 = _x205*_x216
+            _pd__104 = _x212*_x217
+            _pd__105 = _x214*_x216
+            _pd__106 = _x217*i_liftoff_q_r*math.cos(i_liftoff_q_th)
+            _x218 = _x213 + (0.5)*_x215
+            _pd__107 = -_x218
+            _pd__108 = _x218
+            d_i_P_new2__q_r_td = (_pd__103*d_i_bottom_q_r__q_r_td + _pd__104*d_i_bottom_q_th__q_r_td
+                + _pd__105*d_i_liftoff_q_r__q_r_td + _pd__106*d_i_liftoff_q_th__q_r_td
+                + _pd__107*d_i_t_bottom__q_r_td + _pd__108*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_pd__103*d_i_bottom_q_r__q_rd_td + _pd__104*d_i_bottom_q_th__q_rd_td
+                + _pd__105*d_i_liftoff_q_r__q_rd_td + _pd__106*d_i_liftoff_q_th__q_rd_td
+                + _pd__107*d_i_t_bottom__q_rd_td + _pd__108*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_pd__103*d_i_bottom_q_r__q_th_td + _pd__104*d_i_bottom_q_th__q_th_td
+                + _pd__105*d_i_liftoff_q_r__q_th_td + _pd__106*d_i_liftoff_q_th__q_th_td
+                + _pd__107*d_i_t_bottom__q_th_td + _pd__108*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_pd__103*d_i_bottom_q_r__q_thd_td + _pd__104*d_i_bottom_q_th__q_thd_td
+                + _pd__105*d_i_liftoff_q_r__q_thd_td + _pd__106*d_i_liftoff_q_th__q_thd_td
+                + _pd__107*d_i_t_bottom__q_thd_td + _pd__108*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_pd__103*d_i_bottom_q_r__k_c + _pd__104*d_i_bottom_q_th__k_c
+                + _pd__105*d_i_liftoff_q_r__k_c + _pd__106*d_i_liftoff_q_th__k_c + _pd__107*d_i_t_bottom__k_c
+                + _pd__108*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_pd__103*d_i_bottom_q_r__k_d + _pd__104*d_i_bottom_q_th__k_d
+                + _pd__105*d_i_liftoff_q_r__k_d + _pd__106*d_i_liftoff_q_th__k_d + _pd__107*d_i_t_bottom__k_d
+                + _pd__108*d_i_t_stance__k_d)
+            d_i_P_new2__c = (_pd__103*d_i_bottom_q_r__c + _pd__104*d_i_bottom_q_th__c
+                + _pd__105*d_i_liftoff_q_r__c + _pd__106*d_i_liftoff_q_th__c + _pd__107*d_i_t_bottom__c
+                + _pd__108*d_i_t_stance__c)
+        elif gravity == 5.0:
             # eq (76) on each half, the average leg length of the damped rho(t) on it
-            _x140 = -delta*i_cos_b + i_c_omega_D*i_sin_b
-            _x141 = _x140*i_exp_b + delta
-            _x142 = delta*i_sin_b + i_c_omega_D*i_cos_b
-            _x143 = -_x142*i_exp_b + i_c_omega_D
-            _x144 = _x141*i_c_A_c + _x143*i_c_B_s
-            _x145 = (1.0/i_t_bottom)
-            _x146 = delta**2
-            _x147 = _x146 + i_c_omega_D**2
-            _x148 = (1.0/_x147)
-            _x149 = _x145*_x148
-            _x150 = l0*(_x144*_x149 + i_c_a + 1.0)
-            _i_L1 = _x150
-            _x151 = _x149*l0
-            _pd__69 = _x141*_x151
-            _pd__70 = _x143*_x151
-            _x152 = i_c_A_c*i_exp_b
-            _x153 = -i_cos_b*i_exp_b + 1.0
-            _x154 = 2.0*_x144*_x145*_x148**2
-            _pd__71 = l0*(_x145*_x148*(_x152*i_sin_b + _x153*i_c_B_s) - _x154*i_c_omega_D)
-            _x155 = i_c_B_s*i_exp_b
-            _pd__72 = _x151*(-_x152*delta - _x155*i_c_omega_D)
-            _pd__73 = _x151*(_x140*i_c_A_c - _x142*i_c_B_s)
-            _pd__74 = _x151*(-_x155*delta + i_c_A_c*i_c_omega_D*i_exp_b)
-            _pd__75 = -_x144*_x145**2*_x148*l0
-            _d_i_L1__q_r_td = (_pd__69*d_i_c_A_c__q_r_td + _pd__70*d_i_c_B_s__q_r_td
-                + _pd__71*d_i_c_omega_D__q_r_td + _pd__72*d_i_cos_b__q_r_td + _pd__73*d_i_exp_b__q_r_td
-                + _pd__74*d_i__s__q_r_td + _pd__75*d_i_t_bottom__q_r_td + d_i_c_a__q_r_td*l0)
-            _d_i_L1__q_rd_td = (-_pd__69*d_i_c_a__q_rd_td + _pd__70*d_i_c_B_s__q_rd_td
-                + _pd__71*d_i_c_omega_D__q_rd_td + _pd__72*d_i_cos_b__q_rd_td + _pd__73*d_i_exp_b__q_rd_td
-                + _pd__74*d_i__s__q_rd_td + _pd__75*d_i_t_bottom__q_rd_td + d_i_c_a__q_rd_td*l0)
-            _d_i_L1__q_th_td = (-_pd__69*d_i_c_a__q_th_td + _pd__70*d_i_c_B_s__q_th_td
-                + _pd__71*d_i_c_omega_D__q_th_td + _pd__72*d_i_cos_b__q_th_td + _pd__73*d_i_exp_b__q_th_td
-                + _pd__74*d_i__s__q_th_td + _pd__75*d_i_t_bottom__q_th_td + d_i_c_a__q_th_td*l0)
-            _d_i_L1__q_thd_td = (-_pd__69*d_i_c_a__q_thd_td + _pd__70*d_i_c_B_s__q_thd_td
-                + _pd__71*d_i_c_omega_D__q_thd_td + _pd__72*d_i_cos_b__q_thd_td + _pd__73*d_i_exp_b__q_thd_td
-                + _pd__74*d_i__s__q_thd_td + _pd__75*d_i_t_bottom__q_thd_td + d_i_c_a__q_thd_td*l0)
-            _d_i_L1__k_c = (-_pd__69*d_i_c_a__k_c + _pd__70*d_i_c_B_s__k_c + _pd__71*d_i_c_omega_D__k_c
-                + _pd__72*d_i_cos_b__k_c + _pd__73*d_i_exp_b__k_c + _pd__74*d_i__s__k_c
-                + _pd__75*d_i_t_bottom__k_c + d_i_c_a__k_c*l0)
-            _d_i_L1__k_d = (-_pd__69*d_i_c_a__k_d + _pd__70*d_i_c_B_s__k_d + _pd__71*d_i_c_omega_D__k_d
-                + _pd__72*d_i_cos_b__k_d + _pd__73*d_i_exp_b__k_d + _pd__74*d_i__s__k_d
-                + _pd__75*d_i_t_bottom__k_d + d_i_c_a__k_d*l0)
-            _x156 = d_delta__c*l0
-            _d_i_L1__c = (-_pd__69*d_i_c_a__c + _pd__70*d_i_c_B_s__c + _pd__71*d_i_c_omega_D__c
-                + _pd__72*d_i_cos_b__c + _pd__73*d_i_exp_b__c + _pd__74*d_i__s__c + _pd__75*d_i_t_bottom__c
-                + _x156*(_x145*_x148*(_x153*i_c_A_c - _x155*i_sin_b) - _x154*delta) + d_i_c_a__c*l0)
-            _x157 = -delta*i_cos_t + i_d_omega_D*i_sin_t
-            _x158 = _x157*i_exp_t + delta
-            _x159 = delta*i_sin_t + i_cos_t*i_d_omega_D
-            _x160 = -_x159*i_exp_t + i_d_omega_D
-            _x161 = _x158*i_d_A_c + _x160*i_d_B_s
-            _x162 = (1.0/i_tau)
-            _x163 = _x146 + i_d_omega_D**2
-            _x164 = (1.0/_x163)
-            _x165 = _x162*_x164
-            _x166 = l0*(_x161*_x165 + i_d_a + 1.0)
-            _i_L2 = _x166
-            _x167 = i_d_A_c*i_exp_t
-            _x168 = i_d_B_s*i_exp_t
-            _x169 = _x165*l0
-            _pd__76 = _x169*(-_x167*delta - _x168*i_d_omega_D)
-            _pd__77 = _x158*_x169
-            _pd__78 = _x160*_x169
-            _x170 = -i_cos_t*i_exp_t + 1.0
-            _x171 = 2.0*_x161*_x162*_x164**2
-            _pd__79 = l0*(_x162*_x164*(_x167*i_sin_t + _x170*i_d_B_s) - _x171*i_d_omega_D)
-            _pd__80 = _x169*(_x157*i_d_A_c - _x159*i_d_B_s)
-            _pd__81 = _x169*(-_x168*delta + i_d_A_c*i_d_omega_D*i_exp_t)
-            _pd__82 = -_x161*_x162**2*_x164*l0
-            _d_i_L2__q_r_td = (_pd__76*d_i_cos_t__q_r_td + _pd__77*d_i_d_A_c__q_r_td
-                + _pd__78*d_i_d_B_s__q_r_td + _pd__79*d_i_d_omega_D__q_r_td + _pd__80*d_i_exp_t__q_r_td
-                + _pd__81*d_i_sin_t__q_r_td + _pd__82*d_i_tau__q_r_td + d_i_d_a__q_r_td*l0)
-            _d_i_L2__q_rd_td = (_pd__76*d_i_cos_t__q_rd_td + _pd__77*d_i_d_A_c__q_rd_td
-                + _pd__78*d_i_d_B_s__q_rd_td + _pd__79*d_i_d_omega_D__q_rd_td + _pd__80*d_i_exp_t__q_rd_td
-                + _pd__81*d_i_sin_t__q_rd_td + _pd__82*d_i_tau__q_rd_td + d_i_d_a__q_rd_td*l0)
-            _d_i_L2__q_th_td = (_pd__76*d_i_cos_t__q_th_td + _pd__77*d_i_d_A_c__q_th_td
-                + _pd__78*d_i_d_B_s__q_th_td + _pd__79*d_i_d_omega_D__q_th_td + _pd__80*d_i_exp_t__q_th_td
-                + _pd__81*d_i_sin_t__q_th_td + _pd__82*d_i_tau__q_th_td + d_i_d_a__q_th_td*l0)
-            _d_i_L2__q_thd_td = (_pd__76*d_i_cos_t__q_thd_td + _pd__77*d_i_d_A_c__q_thd_td
-                + _pd__78*d_i_d_B_s__q_thd_td + _pd__79*d_i_d_omega_D__q_thd_td + _pd__80*d_i_exp_t__q_thd_td
-                + _pd__81*d_i_sin_t__q_thd_td + _pd__82*d_i_tau__q_thd_td + d_i_d_a__q_thd_td*l0)
-            _d_i_L2__k_c = (_pd__76*d_i_cos_t__k_c + _pd__77*d_i_d_A_c__k_c + _pd__78*d_i_d_B_s__k_c
-                + _pd__79*d_i_d_omega_D__k_c + _pd__80*d_i_exp_t__k_c + _pd__81*d_i_sin_t__k_c
-                + _pd__82*d_i_tau__k_c + d_i_d_a__k_c*l0)
-            _d_i_L2__k_d = (_pd__76*d_i_cos_t__k_d + _pd__77*d_i_d_A_c__k_d + _pd__78*d_i_d_B_s__k_d
-                + _pd__79*d_i_d_omega_D__k_d + _pd__80*d_i_exp_t__k_d + _pd__81*d_i_sin_t__k_d
-                + _pd__82*d_i_tau__k_d + d_i_d_a__k_d*l0)
-            _d_i_L2__c = (_pd__76*d_i_cos_t__c + _pd__77*d_i_d_A_c__c + _pd__78*d_i_d_B_s__c
-                + _pd__79*d_i_d_omega_D__c + _pd__80*d_i_exp_t__c + _pd__81*d_i_sin_t__c + _pd__82*d_i_tau__c
-                + _x156*(_x162*_x164*(-_x168*i_sin_t + _x170*i_d_A_c) - _x171*delta) + d_i_d_a__c*l0)
-            _x172 = g_s*m
-            _x173 = _x172*math.sin(i_bottom_q_th)
-            _x174 = _x150*_x173
-            _x175 = _x172*math.sin(q_th_td)
-            _x176 = _x150*_x175
-            _x177 = (0.5)*i_t_bottom
-            i_P_new1 = _x177*(_x174 + _x176)
-            _pd__83 = _x177*(_x173 + _x175)
-            _x178 = _x172*math.cos(i_bottom_q_th)
-            _x179 = _x150*_x177
-            _pd__84 = _x178*_x179
-            _pd__85 = (0.5)*_x174 + (0.5)*_x176
-            d_i_P_new1__q_r_td = (_d_i_L1__q_r_td*_pd__83 + _pd__84*d_i_bottom_q_th__q_r_td
-                + _pd__85*d_i_t_bottom__q_r_td)
-            d_i_P_new1__q_rd_td = (_d_i_L1__q_rd_td*_pd__83 + _pd__84*d_i_bottom_q_th__q_rd_td
-                + _pd__85*d_i_t_bottom__q_rd_td)
-            d_i_P_new1__q_th_td = (_d_i_L1__q_th_td*_pd__83 + _pd__84*d_i_bottom_q_th__q_th_td
-                + _pd__85*d_i_t_bottom__q_th_td + _x172*_x179*math.cos(q_th_td))
-            d_i_P_new1__q_thd_td = (_d_i_L1__q_thd_td*_pd__83 + _pd__84*d_i_bottom_q_th__q_thd_td
-                + _pd__85*d_i_t_bottom__q_thd_td)
-            d_i_P_new1__k_c = _d_i_L1__k_c*_pd__83 + _pd__84*d_i_bottom_q_th__k_c + _pd__85*d_i_t_bottom__k_c
-            d_i_P_new1__k_d = _d_i_L1__k_d*_pd__83 + _pd__84*d_i_bottom_q_th__k_d + _pd__85*d_i_t_bottom__k_d
-            d_i_P_new1__c = _d_i_L1__c*_pd__83 + _pd__84*d_i_bottom_q_th__c + _pd__85*d_i_t_bottom__c
-            _x180 = _x166*_x173
-            _x181 = _x172*math.sin(i_liftoff_q_th)
-            _x182 = _x166*_x181
-            _x183 = -0.5*i_t_bottom + (0.5)*i_t_stance
-            i_P_new2 = _x183*(_x180 + _x182)
-            _pd__86 = _x183*(_x173 + _x181)
-            _x184 = _x166*_x183
-            _pd__87 = _x178*_x184
-            _pd__88 = _x172*_x184*math.cos(i_liftoff_q_th)
-            _x185 = (0.5)*_x180 + (0.5)*_x182
-            _pd__89 = -_x185
-            _pd__90 = _x185
-            d_i_P_new2__q_r_td = (_d_i_L2__q_r_td*_pd__86 + _pd__87*d_i_bottom_q_th__q_r_td
-                + _pd__88*d_i_liftoff_q_th__q_r_td + _pd__89*d_i_t_bottom__q_r_td
-                + _pd__90*d_i_t_stance__q_r_td)
-            d_i_P_new2__q_rd_td = (_d_i_L2__q_rd_td*_pd__86 + _pd__87*d_i_bottom_q_th__q_rd_td
-                + _pd__88*d_i_liftoff_q_th__q_rd_td + _pd__89*d_i_t_bottom__q_rd_td
-                + _pd__90*d_i_t_stance__q_rd_td)
-            d_i_P_new2__q_th_td = (_d_i_L2__q_th_td*_pd__86 + _pd__87*d_i_bottom_q_th__q_th_td
-                + _pd__88*d_i_liftoff_q_th__q_th_td + _pd__89*d_i_t_bottom__q_th_td
-                + _pd__90*d_i_t_stance__q_th_td)
-            d_i_P_new2__q_thd_td = (_d_i_L2__q_thd_td*_pd__86 + _pd__87*d_i_bottom_q_th__q_thd_td
-                + _pd__88*d_i_liftoff_q_th__q_thd_td + _pd__89*d_i_t_bottom__q_thd_td
-                + _pd__90*d_i_t_stance__q_thd_td)
-            d_i_P_new2__k_c = (_d_i_L2__k_c*_pd__86 + _pd__87*d_i_bottom_q_th__k_c
-                + _pd__88*d_i_liftoff_q_th__k_c + _pd__89*d_i_t_bottom__k_c + _pd__90*d_i_t_stance__k_c)
-            d_i_P_new2__k_d = (_d_i_L2__k_d*_pd__86 + _pd__87*d_i_bottom_q_th__k_d
-                + _pd__88*d_i_liftoff_q_th__k_d + _pd__89*d_i_t_bottom__k_d + _pd__90*d_i_t_stance__k_d)
-            d_i_P_new2__c = (_d_i_L2__c*_pd__86 + _pd__87*d_i_bottom_q_th__c + _pd__88*d_i_liftoff_q_th__c
-                + _pd__89*d_i_t_bottom__c + _pd__90*d_i_t_stance__c)
+            _x219 = -delta*i_cos_b + i_c_omega_D*i_sin_b
+            _x220 = _x219*i_exp_b + delta
+            _x221 = delta*i_sin_b + i_c_omega_D*i_cos_b
+            _x222 = -_x221*i_exp_b + i_c_omega_D
+            _x223 = _x220*i_c_A_c + _x222*i_c_B_s
+            _x224 = (1.0/i_t_bottom)
+            _x225 = delta**2
+            _x226 = _x225 + i_c_omega_D**2
+            _x227 = (1.0/_x226)
+            _x228 = _x224*_x227
+            _x229 = l0*(_x223*_x228 + i_c_a + 1.0)
+            _i_L1 = _x229
+            _x230 = _x228*l0
+            _pd__109 = _x220*_x230
+            _pd__110 = _x222*_x230
+            _x231 = i_c_A_c*i_exp_b
+            _x232 = -i_cos_b*i_exp_b + 1.0
+            _x233 = 2.0*_x223*_x224*_x227**2
+            _pd__111 = l0*(_x224*_x227*(_x231*i_sin_b + _x232*i_c_B_s) - _x233*i_c_omega_D)
+            _x234 = i_c_B_s*i_exp_b
+            _pd__112 = _x230*(-_x231*delta - _x234*i_c_omega_D)
+            _pd__113 = _x230*(_x219*i_c_A_c - _x221*i_c_B_s)
+            _pd__114 = _x230*(-_x234*delta + i_c_A_c*i_c_omega_D*i_exp_b)
+            _pd__115 = -_x223*_x224**2*_x227*l0
+            _d_i_L1__q_r_td = (_pd__109*d_i_c_A_c__q_r_td + _pd__110*d_i_c_B_s__q_r_td
+                + _pd__111*d_i_c_omega_D__q_r_td + _pd__112*d_i_cos_b__q_r_td + _pd__113*d_i_exp_b__q_r_td
+                + _pd__114*d_i__s__q_r_td + _pd__115*d_i_t_bottom__q_r_td + d_i_c_a__q_r_td*l0)
+            _d_i_L1__q_rd_td = (-_pd__109*d_i_c_a__q_rd_td + _pd__110*d_i_c_B_s__q_rd_td
+                + _pd__111*d_i_c_omega_D__q_rd_td + _pd__112*d_i_cos_b__q_rd_td + _pd__113*d_i_exp_b__q_rd_td
+                + _pd__114*d_i__s__q_rd_td + _pd__115*d_i_t_bottom__q_rd_td + d_i_c_a__q_rd_td*l0)
+            _d_i_L1__q_th_td = (-_pd__109*d_i_c_a__q_th_td + _pd__110*d_i_c_B_s__q_th_td
+                + _pd__111*d_i_c_omega_D__q_th_td + _pd__112*d_i_cos_b__q_th_td + _pd__113*d_i_exp_b__q_th_td
+                + _pd__114*d_i__s__q_th_td + _pd__115*d_i_t_bottom__q_th_td + d_i_c_a__q_th_td*l0)
+            _d_i_L1__q_thd_td = (-_pd__109*d_i_c_a__q_thd_td + _pd__110*d_i_c_B_s__q_thd_td
+                + _pd__111*d_i_c_omega_D__q_thd_td + _pd__112*d_i_cos_b__q_thd_td
+                + _pd__113*d_i_exp_b__q_thd_td + _pd__114*d_i__s__q_thd_td + _pd__115*d_i_t_bottom__q_thd_td
+                + d_i_c_a__q_thd_td*l0)
+            _d_i_L1__k_c = (-_pd__109*d_i_c_a__k_c + _pd__110*d_i_c_B_s__k_c + _pd__111*d_i_c_omega_D__k_c
+                + _pd__112*d_i_cos_b__k_c + _pd__113*d_i_exp_b__k_c + _pd__114*d_i__s__k_c
+                + _pd__115*d_i_t_bottom__k_c + d_i_c_a__k_c*l0)
+            _d_i_L1__k_d = (-_pd__109*d_i_c_a__k_d + _pd__110*d_i_c_B_s__k_d + _pd__111*d_i_c_omega_D__k_d
+                + _pd__112*d_i_cos_b__k_d + _pd__113*d_i_exp_b__k_d + _pd__114*d_i__s__k_d
+                + _pd__115*d_i_t_bottom__k_d + d_i_c_a__k_d*l0)
+            _x235 = d_delta__c*l0
+            _d_i_L1__c = (-_pd__109*d_i_c_a__c + _pd__110*d_i_c_B_s__c + _pd__111*d_i_c_omega_D__c
+                + _pd__112*d_i_cos_b__c + _pd__113*d_i_exp_b__c + _pd__114*d_i__s__c
+                + _pd__115*d_i_t_bottom__c + _x235*(_x224*_x227*(_x232*i_c_A_c - _x234*i_sin_b) - _x233*delta)
+                + d_i_c_a__c*l0)
+            _x236 = -delta*i_cos_t + i_d_omega_D*i_sin_t
+            _x237 = _x236*i_exp_t + delta
+            _x238 = delta*i_sin_t + i_cos_t*i_d_omega_D
+            _x239 = -_x238*i_exp_t + i_d_omega_D
+            _x240 = _x237*i_d_A_c + _x239*i_d_B_s
+            _x241 = (1.0/i_tau)
+            _x242 = _x225 + i_d_omega_D**2
+            _x243 = (1.0/_x242)
+            _x244 = _x241*_x243
+            _x245 = l0*(_x240*_x244 + i_d_a + 1.0)
+            _i_L2 = _x245
+            _x246 = i_d_A_c*i_exp_t
+            _x247 = i_d_B_s*i_exp_t
+            _x248 = _x244*l0
+            _pd__116 = _x248*(-_x246*delta - _x247*i_d_omega_D)
+            _pd__117 = _x237*_x248
+            _pd__118 = _x239*_x248
+            _x249 = -i_cos_t*i_exp_t + 1.0
+            _x250 = 2.0*_x240*_x241*_x243**2
+            _pd__119 = l0*(_x241*_x243*(_x246*i_sin_t + _x249*i_d_B_s) - _x250*i_d_omega_D)
+            _pd__120 = _x248*(_x236*i_d_A_c - _x238*i_d_B_s)
+            _pd__121 = _x248*(-_x247*delta + i_d_A_c*i_d_omega_D*i_exp_t)
+            _pd__122 = -_x240*_x241**2*_x243*l0
+            _d_i_L2__q_r_td = (_pd__116*d_i_cos_t__q_r_td + _pd__117*d_i_d_A_c__q_r_td
+                + _pd__118*d_i_d_B_s__q_r_td + _pd__119*d_i_d_omega_D__q_r_td + _pd__120*d_i_exp_t__q_r_td
+                + _pd__121*d_i_sin_t__q_r_td + _pd__122*d_i_tau__q_r_td + d_i_d_a__q_r_td*l0)
+            _d_i_L2__q_rd_td = (_pd__116*d_i_cos_t__q_rd_td + _pd__117*d_i_d_A_c__q_rd_td
+                + _pd__118*d_i_d_B_s__q_rd_td + _pd__119*d_i_d_omega_D__q_rd_td + _pd__120*d_i_exp_t__q_rd_td
+                + _pd__121*d_i_sin_t__q_rd_td + _pd__122*d_i_tau__q_rd_td + d_i_d_a__q_rd_td*l0)
+            _d_i_L2__q_th_td = (_pd__116*d_i_cos_t__q_th_td + _pd__117*d_i_d_A_c__q_th_td
+                + _pd__118*d_i_d_B_s__q_th_td + _pd__119*d_i_d_omega_D__q_th_td + _pd__120*d_i_exp_t__q_th_td
+                + _pd__121*d_i_sin_t__q_th_td + _pd__122*d_i_tau__q_th_td + d_i_d_a__q_th_td*l0)
+            _d_i_L2__q_thd_td = (_pd__116*d_i_cos_t__q_thd_td + _pd__117*d_i_d_A_c__q_thd_td
+                + _pd__118*d_i_d_B_s__q_thd_td + _pd__119*d_i_d_omega_D__q_thd_td
+                + _pd__120*d_i_exp_t__q_thd_td + _pd__121*d_i_sin_t__q_thd_td + _pd__122*d_i_tau__q_thd_td
+                + d_i_d_a__q_thd_td*l0)
+            _d_i_L2__k_c = (_pd__116*d_i_cos_t__k_c + _pd__117*d_i_d_A_c__k_c + _pd__118*d_i_d_B_s__k_c
+                + _pd__119*d_i_d_omega_D__k_c + _pd__120*d_i_exp_t__k_c + _pd__121*d_i_sin_t__k_c
+                + _pd__122*d_i_tau__k_c + d_i_d_a__k_c*l0)
+            _d_i_L2__k_d = (_pd__116*d_i_cos_t__k_d + _pd__117*d_i_d_A_c__k_d + _pd__118*d_i_d_B_s__k_d
+                + _pd__119*d_i_d_omega_D__k_d + _pd__120*d_i_exp_t__k_d + _pd__121*d_i_sin_t__k_d
+                + _pd__122*d_i_tau__k_d + d_i_d_a__k_d*l0)
+            _d_i_L2__c = (_pd__116*d_i_cos_t__c + _pd__117*d_i_d_A_c__c + _pd__118*d_i_d_B_s__c
+                + _pd__119*d_i_d_omega_D__c + _pd__120*d_i_exp_t__c + _pd__121*d_i_sin_t__c
+                + _pd__122*d_i_tau__c + _x235*(_x241*_x243*(-_x247*i_sin_t + _x249*i_d_A_c) - _x250*delta)
+                + d_i_d_a__c*l0)
+            _x251 = g_s*m
+            _x252 = _x251*math.sin(i_bottom_q_th)
+            _x253 = _x229*_x252
+            _x254 = _x251*math.sin(q_th_td)
+            _x255 = _x229*_x254
+            _x256 = (0.5)*i_t_bottom
+            i_P_new1 = _x256*(_x253 + _x255)
+            _pd__123 = _x256*(_x252 + _x254)
+            _x257 = _x251*math.cos(i_bottom_q_th)
+            _x258 = _x229*_x256
+            _pd__124 = _x257*_x258
+            _pd__125 = (0.5)*_x253 + (0.5)*_x255
+            d_i_P_new1__q_r_td = (_d_i_L1__q_r_td*_pd__123 + _pd__124*d_i_bottom_q_th__q_r_td
+                + _pd__125*d_i_t_bottom__q_r_td)
+            d_i_P_new1__q_rd_td = (_d_i_L1__q_rd_td*_pd__123 + _pd__124*d_i_bottom_q_th__q_rd_td
+                + _pd__125*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_d_i_L1__q_th_td*_pd__123 + _pd__124*d_i_bottom_q_th__q_th_td
+                + _pd__125*d_i_t_bottom__q_th_td + _x251*_x258*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_d_i_L1__q_thd_td*_pd__123 + _pd__124*d_i_bottom_q_th__q_thd_td
+                + _pd__125*d_i_t_bottom__q_thd_td)
+            d_i_P_new1__k_c = (_d_i_L1__k_c*_pd__123 + _pd__124*d_i_bottom_q_th__k_c
+                + _pd__125*d_i_t_bottom__k_c)
+            d_i_P_new1__k_d = (_d_i_L1__k_d*_pd__123 + _pd__124*d_i_bottom_q_th__k_d
+                + _pd__125*d_i_t_bottom__k_d)
+            d_i_P_new1__c = _d_i_L1__c*_pd__123 + _pd__124*d_i_bottom_q_th__c + _pd__125*d_i_t_bottom__c
+            _x259 = _x245*_x252
+            _x260 = _x251*math.sin(i_liftoff_q_th)
+            _x261 = _x245*_x260
+            _x262 = -0.5*i_t_bottom + (0.5)*i_t_stance
+            i_P_new2 = _x262*(_x259 + _x261)
+            _pd__126 = _x262*(_x252 + _x260)
+            _x263 = _x245*_x262
+            _pd__127 = _x257*_x263
+            _pd__128 = _x251*_x263*math.cos(i_liftoff_q_th)
+            _x264 = (0.5)*_x259 + (0.5)*_x261
+            _pd__129 = -_x264
+            _pd__130 = _x264
+            d_i_P_new2__q_r_td = (_d_i_L2__q_r_td*_pd__126 + _pd__127*d_i_bottom_q_th__q_r_td
+                + _pd__128*d_i_liftoff_q_th__q_r_td + _pd__129*d_i_t_bottom__q_r_td
+                + _pd__130*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_d_i_L2__q_rd_td*_pd__126 + _pd__127*d_i_bottom_q_th__q_rd_td
+                + _pd__128*d_i_liftoff_q_th__q_rd_td + _pd__129*d_i_t_bottom__q_rd_td
+                + _pd__130*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_d_i_L2__q_th_td*_pd__126 + _pd__127*d_i_bottom_q_th__q_th_td
+                + _pd__128*d_i_liftoff_q_th__q_th_td + _pd__129*d_i_t_bottom__q_th_td
+                + _pd__130*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_d_i_L2__q_thd_td*_pd__126 + _pd__127*d_i_bottom_q_th__q_thd_td
+                + _pd__128*d_i_liftoff_q_th__q_thd_td + _pd__129*d_i_t_bottom__q_thd_td
+                + _pd__130*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_d_i_L2__k_c*_pd__126 + _pd__127*d_i_bottom_q_th__k_c
+                + _pd__128*d_i_liftoff_q_th__k_c + _pd__129*d_i_t_bottom__k_c + _pd__130*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_d_i_L2__k_d*_pd__126 + _pd__127*d_i_bottom_q_th__k_d
+                + _pd__128*d_i_liftoff_q_th__k_d + _pd__129*d_i_t_bottom__k_d + _pd__130*d_i_t_stance__k_d)
+            d_i_P_new2__c = (_d_i_L2__c*_pd__126 + _pd__127*d_i_bottom_q_th__c + _pd__128*d_i_liftoff_q_th__c
+                + _pd__129*d_i_t_bottom__c + _pd__130*d_i_t_stance__c)
         else:
             return fail(out, STATUS_INVALID_INPUT)
         # next values
@@ -1295,7 +1575,7 @@ def geyer_damped_apex_return_jacobian(x, p, out):
     """Apex-return map by Geyer et al.'s map with leg damping (damped radial oscillator per half), and its
     derivatives with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 4, 7, 17, 18, 19, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -1324,8 +1604,9 @@ def geyer_damped_apex_return_jacobian(x, p, out):
             < (0.5)*math.pi)) & ((m > 0.0)) & ((l0 > 0.0)) & ((k_c > 0.0)) & ((k_d > 0.0)) & ((g_s > 0.0))
             & ((c >= 0.0)) & ((g_f > 0.0)) & ((q_r_td <= l0) and (q_r_td > 0.0)) & ((q_r_lo <= l0) and (q_r_lo
             > 0.0)) & ((liftoff == 0.0) or (liftoff == 1.0)) & ((gravity == 0.0) or (gravity == 1.0)
-            or (gravity == 2.0)) & ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 1000.0)) & ((tol >= 0.0) and (tol <= 1.0))):
+            or (gravity == 2.0) or (gravity == 3.0) or (gravity == 4.0) or (gravity == 5.0)) & ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) & ((tol >= 0.0)
+            and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))

@@ -246,15 +246,18 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     _repeated1, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {}},
     {'name': 'geyer-damped', 'title':
     "Geyer et al.'s map with leg damping (damped radial oscillator per half)", 'section': '3.1', 'equations':
-    ['4', '7', '17', '18', '19', '65', '76'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'c'], 'options': [
-    _repeated3, {'name': 'gravity', 'kind': 'choice', 'default': 'none', 'doc':
-    'virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo], as in '
-    'geyer-vs); each half runs with its mean momentum, the rates with the momentum at that instant',
-    'choices': [{'value': 'none', 'doc':
-    'p_th conserved (Assumption 1; the damper exerts no torque about the toe)'}, {'value': 'type3', 'doc':
-    "(65) per half: the trapezoid rule on the torque at the half's ends"}, {'value': 'type4', 'doc':
-    "(76) per half: the torque at the half's average leg length of the damped rho(t)"}], 'low': None, 'high':
-    None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
+    ['4', '7', '17', '18', '19', '48', '49', '52', '62', '65', '76'], 'params': ['m', 'l0', 'k_c', 'k_d',
+    'g_s', 'c'], 'options': [_repeated3, {'name': 'gravity', 'kind': 'choice', 'default': 'none', 'doc':
+    'virtual gravity effect on p_th per half (report section 4 on [t_td, t_b] and [t_b, t_lo], as '
+    "geyer-vs's types 3-4): (48) from the torque at each half's two ends with the type's leg length; "
+    'each half runs with its mean momentum, the rates with the momentum at that instant', 'choices': [{
+    'value': 'none', 'doc': 'p_th conserved (Assumption 1; the damper exerts no torque about the toe)'}, {
+    'value': 'type0', 'doc': '(48) per half with the leg length l0 (type 0, (49))'}, {'value': 'type1', 'doc':
+    '(48) per half with the leg length (l0 + q_r_b)/2 (type 1, (52))'}, {'value': 'type2', 'doc':
+    '(48) per half with the stance-average leg length of the damped rho(t) (type 2, (62))'}, {'value':
+    'type3', 'doc': "(65) per half: the trapezoid rule on the torque at the half's ends"}, {'value': 'type4',
+    'doc': "(76) per half: the torque at the half's average leg length of the damped rho(t)"}], 'low': None,
+    'high': None, 'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': [
     'accuracy-variants']}, {'name': 'iterations', 'kind': 'int', 'default': 100, 'doc':
     "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)", 'choices': [], 'low': 0, 'high': 1000,
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}, _repeated4],

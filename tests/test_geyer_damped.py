@@ -133,6 +133,21 @@ MEASURED = {
     ("none", 0.05): (0.0092, 0.0290),
     ("none", 0.1): (0.0137, 0.0364),
     ("none", 0.2): (0.0244, 0.0478),
+    ("type0", 0.0): (0.0143, 0.0507),
+    ("type0", 0.02): (0.0123, 0.0440),
+    ("type0", 0.05): (0.0098, 0.0356),
+    ("type0", 0.1): (0.0068, 0.0249),
+    ("type0", 0.2): (0.0038, 0.0117),
+    ("type1", 0.0): (0.0132, 0.0478),
+    ("type1", 0.02): (0.0112, 0.0413),
+    ("type1", 0.05): (0.0088, 0.0331),
+    ("type1", 0.1): (0.0058, 0.0228),
+    ("type1", 0.2): (0.0026, 0.0103),
+    ("type2", 0.0): (0.0129, 0.0470),
+    ("type2", 0.02): (0.0109, 0.0405),
+    ("type2", 0.05): (0.0085, 0.0323),
+    ("type2", 0.1): (0.0055, 0.0220),
+    ("type2", 0.2): (0.0025, 0.0097),
     ("type3", 0.0): (0.0141, 0.0498),
     ("type3", 0.02): (0.0121, 0.0432),
     ("type3", 0.05): (0.0096, 0.0349),
@@ -155,6 +170,63 @@ def test_geyer_damped_accuracy_against_exact_damped_map(gravity, zeta):
     assert errors.max() <= (min(1.2 * worst, 0.05) if gravity == "none" else 1.2 * worst), errors.max()
 
 
+def _touchdown(p: SlipParams, height: float, speed: float, angle: float) -> tuple[float, ...]:
+    """The polar touchdown state at q_r = l0 after the exact descent from the apex (as
+    :func:`damped_geyer_apex`)."""
+    b_y, b_x = p.l0 * math.cos(angle), -p.l0 * math.sin(angle)
+    b_yd = -math.sqrt(2.0 * p.g_f * (height - b_y))
+    return (p.l0, (b_x * speed + b_y * b_yd) / p.l0, angle, (b_x * b_yd - speed * b_y) / p.l0**2)
+
+
+#: Gauss-Legendre nodes and weights on [-1, 1] for a half's average leg length (the damped rho(t) is
+#: smooth on each half: 32 nodes integrate it to rounding).
+_GL = np.polynomial.legendre.leggauss(32)
+
+
+def _mean_leg_length(p: SlipParams, touchdown, t_from: float, t_to: float, gravity: str) -> float:
+    """The mean of the map's own q_r(t) (``slipmaps.trajectory``) on [t_from, t_to], by quadrature."""
+    nodes, weights = _GL
+    times = t_from + (nodes + 1.0) * (t_to - t_from) / 2.0
+    _, states, status = slipmaps.trajectory("geyer-damped", p, touchdown, times, gravity=gravity)
+    assert status == Status.OK
+    return float(weights @ states[:, 0]) / 2.0
+
+
+@pytest.mark.parametrize("gravity", ["type0", "type1", "type2", "type3", "type4"])
+def test_eq48_each_half_impulse_at_the_types_leg_length(gravity):
+    """The fixed point's virtual gravity effect of each half is (48) on that half from the torque
+    m g_s q_r sin q_th at its two ends, with the type's leg length: l0 (type 0, as (49)),
+    (l0 + q_r_b)/2 (type 1, (52)), the stance mean of q_r (type 2, (62)), the true ones (type 3,
+    (65)), each half's mean (type 4, (76)); recomputed here from the map's own event states and
+    trajectory (measured at most 4e-14 of the momentum scale m l0 sqrt(g_s l0) over 15 steps at 10 %
+    of the critical damping; the fixed point stops within 1e-12 of its scale)."""
+    p = _ratio(0.1)
+    steps = [s for s in STEPS if s[0] == 1.05]
+    assert len(steps) == 15
+    for height, speed, angle in steps:
+        touchdown = _touchdown(p, height, speed, angle)
+        res = slipmaps.stance("geyer-damped", p, touchdown, gravity=gravity)
+        assert res.ok, res.message
+        t_b, t_s, q_r_b = res["t_bottom"], res["t_stance"], res["bottom_q_r"]
+        means = [_mean_leg_length(p, touchdown, lo, hi, gravity) for lo, hi in ((0.0, t_b), (t_b, t_s))]
+        stance_mean = (t_b * means[0] + (t_s - t_b) * means[1]) / t_s
+        lengths = {
+            "type0": (p.l0,) * 4,
+            "type1": ((p.l0 + q_r_b) / 2.0,) * 4,
+            "type2": (stance_mean,) * 4,
+            "type3": (p.l0, q_r_b, q_r_b, res["liftoff_q_r"]),
+            "type4": (means[0], means[0], means[1], means[1]),
+        }[gravity]
+        # each half's two ends: touchdown and bottom, bottom and liftoff
+        angles = (angle, res["bottom_q_th"], res["bottom_q_th"], res["liftoff_q_th"])
+        torque = [p.m * p.g_s * r * math.sin(th) for r, th in zip(lengths, angles, strict=True)]
+        want = (t_b * (torque[0] + torque[1]) / 2.0, (t_s - t_b) * (torque[2] + torque[3]) / 2.0)
+        got = (res["P_c_compression"], res["P_c_decompression"])
+        scale = p.m * p.l0 * math.sqrt(p.g_s * p.l0)
+        assert abs(got[0] - want[0]) < 1e-11 * scale and abs(got[1] - want[1]) < 1e-11 * scale, (got, want)
+        assert abs(got[0]) > 1e-3 * scale  # the correction is not empty
+
+
 def test_force_liftoff_is_the_leg_forces_zero():
     """With ``liftoff="force"`` the leg lifts off where k_d (l0 - q_r) - c q_rd = 0, before q_r = l0
     (measured at most 2.3e-10 N over the 15 steps at 1 m apex height, 10 % critical); with
@@ -163,10 +235,7 @@ def test_force_liftoff_is_the_leg_forces_zero():
     steps = [s for s in STEPS if s[0] == 1.0]
     assert len(steps) == 15
     for height, speed, angle in steps:
-        # the touchdown at q_r = l0 after the exact descent from the apex (as damped_geyer_apex)
-        b_y, b_x = p.l0 * math.cos(angle), -p.l0 * math.sin(angle)
-        b_yd = -math.sqrt(2.0 * p.g_f * (height - b_y))
-        touchdown = (p.l0, (b_x * speed + b_y * b_yd) / p.l0, angle, (b_x * b_yd - speed * b_y) / p.l0**2)
+        touchdown = _touchdown(p, height, speed, angle)
         force = slipmaps.stance("geyer-damped", p, touchdown)
         length = slipmaps.stance("geyer-damped", p, touchdown, liftoff="length")
         leg = p.k_d * (p.l0 - force["liftoff_q_r"]) - p.c * force["liftoff_q_rd"]

@@ -302,11 +302,15 @@ def liftoff_kernel() -> Kernel:
 
 GRAVITY = Option(
     "gravity",
-    "virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo], as in "
-    "geyer-vs); each half runs with its mean momentum, the rates with the momentum at that instant",
+    "virtual gravity effect on p_th per half (report section 4 on [t_td, t_b] and [t_b, t_lo], as "
+    "geyer-vs's types 3-4): (48) from the torque at each half's two ends with the type's leg length; "
+    "each half runs with its mean momentum, the rates with the momentum at that instant",
     "none",
     (
         ("none", "p_th conserved (Assumption 1; the damper exerts no torque about the toe)"),
+        ("type0", "(48) per half with the leg length l0 (type 0, (49))"),
+        ("type1", "(48) per half with the leg length (l0 + q_r_b)/2 (type 1, (52))"),
+        ("type2", "(48) per half with the stance-average leg length of the damped rho(t) (type 2, (62))"),
         ("type3", "(65) per half: the trapezoid rule on the torque at the half's ends"),
         ("type4", "(76) per half: the torque at the half's average leg length of the damped rho(t)"),
     ),
@@ -398,8 +402,8 @@ def _pass(n: _Names, P1: sp.Basic, P2: sp.Basic) -> tuple[Step, ...]:
 
 
 def _impulses(inp: MapInputs, n: _Names) -> Switch:
-    """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse (type 3 or 4 of section 4
-    on [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``, type 4 with the average leg
+    """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse (types 0-4 of section 4 on
+    [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``, types 2 and 4 with the average leg
     length of each half's damped rho(t) (:func:`average_offset`)."""
     c_, d_ = n.prefix + "c_", n.prefix + "d_"
     at_b = {_COS: n("cos_b"), _SIN: n("sin_b"), _EXP: n("exp_b"), t: n("t_bottom")}
@@ -489,7 +493,7 @@ MAPS = (
         name="geyer-damped",
         title="Geyer et al.'s map with leg damping (damped radial oscillator per half)",
         section="3.1",
-        equations=("4", "7", "17", "18", "19", "65", "76"),
+        equations=("4", "7", "17", "18", "19", "48", "49", "52", "62", "65", "76"),
         params=("m", "l0", "k_c", "k_d", "g_s", "c"),
         build=_build,
         options=(LIFTOFF, GRAVITY, iterations_option(100, ()), tol_option(1e-12)),
@@ -502,6 +506,6 @@ MAPS = (
         "from the touchdown state with k_c and from the bottom with k_d; the bottom in closed form; the "
         "leg angle (18)-(19) integrated over the damped rho; liftoff where the leg force or q_r - q_r_lo "
         "reaches 0 (option liftoff), by Newton's method safeguarded by bisection; option gravity adds "
-        "type 3 or 4 of section 4 on each half, as geyer-vs does.",
+        "a virtual gravity effect of section 4 (types 0-4) on each half.",
     ),
 )

@@ -96,42 +96,40 @@ def half_impulses(t_b, t_s, angles, lengths) -> tuple[sp.Basic, sp.Basic]:
 def half_impulse_switch(
     inp: MapInputs, prefix: str, times: tuple, angles: tuple, lengths: tuple, averages: tuple, source: str
 ) -> Switch:
-    """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse by option ``gravity``
-    (``none``, ``type3``, ``type4``) of a map split at the bottom (``geyer-vs``, ``geyer-damped``):
-    type 3, (65) on [t_td, t_b] and [t_b, t_lo] with the true leg lengths ``lengths`` (q_r_td,
-    q_r_b, q_r_b, q_r_lo); type 4, (76) with each half's average leg length ``averages`` (two
-    expressions of the stance solution ``source``). ``times``: (t_b, t_s); ``angles``: (q_th_td,
-    q_th_b, q_th_lo)."""
+    """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse by option ``gravity`` of a map
+    split at the bottom (``geyer-vs``, ``geyer-damped``), one branch per choice the option declares:
+    (48) on [t_td, t_b] and [t_b, t_lo] from the torque at each half's two ends, with the leg length
+    of the type: ``type0`` l0 (as (49)), ``type1`` (l0 + q_r_b)/2 (as (52)), ``type2`` the stance
+    average of ``source`` (as (62)), ``type3`` the true leg lengths ``lengths`` (q_r_td, q_r_b, q_r_b,
+    q_r_lo): (65); ``type4`` each half's average ``averages`` (two expressions of ``source``): (76);
+    ``none`` no effect. ``times``: (t_b, t_s); ``angles``: (q_th_td, q_th_b, q_th_lo)."""
     (t_b, t_s), choice = times, inp.options["gravity"]
     P1, P2 = sym(f"{prefix}P_new1"), sym(f"{prefix}P_new2")
-    L1, L2 = sym(f"_{prefix}L1"), sym(f"_{prefix}L2")  # private to their branch
+    L1, L2, L = sym(f"_{prefix}L1"), sym(f"_{prefix}L2"), sym(f"_{prefix}L")  # private to their branch
+    q_r_b = lengths[1]
+
+    def rule(held: tuple, comment: str, defs: tuple = ()) -> tuple[Step, ...]:
+        impulses = half_impulses(t_b, t_s, angles, held)
+        return (Stage((*defs, *zip((P1, P2), impulses, strict=True)), comment=comment),)
+
+    averages_defs = ((L1, averages[0]), (L2, averages[1]))
+    rules = {
+        "none": lambda: (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),),
+        "type0": lambda: rule((l0,) * 4, "eq (48) on each half at the rest length l0, as (49)"),
+        "type1": lambda: rule(((l0 + q_r_b) / 2,) * 4, "eq (48) on each half at (l0 + q_r_b)/2, as (52)"),
+        "type2": lambda: rule(
+            (L,) * 4,
+            f"eq (48) on each half at the stance-average leg length of {source}, as (62)",
+            (*averages_defs, (L, (t_b * L1 + (t_s - t_b) * L2) / t_s)),
+        ),
+        "type3": lambda: rule(lengths, "eq (65) on each half"),
+        "type4": lambda: rule(
+            (L1, L1, L2, L2), f"eq (76) on each half, the average leg length of {source} on it", averages_defs
+        ),
+    }
     return Switch(
         inp.opt("gravity"),
-        (
-            (choice.code("none"), (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),)),
-            (
-                choice.code("type3"),
-                (
-                    Stage(
-                        tuple(zip((P1, P2), half_impulses(t_b, t_s, angles, lengths), strict=True)),
-                        comment="eq (65) on each half",
-                    ),
-                ),
-            ),
-            (
-                choice.code("type4"),
-                (
-                    Stage(
-                        (
-                            (L1, averages[0]),
-                            (L2, averages[1]),
-                            *zip((P1, P2), half_impulses(t_b, t_s, angles, (L1, L1, L2, L2)), strict=True),
-                        ),
-                        comment=f"eq (76) on each half, the average leg length of {source} on it",
-                    ),
-                ),
-            ),
-        ),
+        tuple((choice.code(v), rules[v]()) for v in choice.values),
         comment="the virtual gravity effect of each half",
     )
 
