@@ -32,7 +32,7 @@ _NAN5 = (NAN,) * 5
 @njit(cache=True, error_model="numpy")
 def damped_liftoff(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff):
     """Liftoff of the damped decompression half: the first zero of the leg force (or of q_r - q_r_lo) after
-    the bottom, safeguarded Newton.
+    the bottom, safeguarded Halley.
 
     Arguments:
         a: offset a of the decompression half's rho(t)
@@ -55,9 +55,11 @@ def damped_liftoff(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff):
         by_force: 1: the leg force's zero, 0: q_r = q_r_lo
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 88
+    # Total ops: 234
     # liftoff lies in (0, pi / omega_D) after the bottom, where rho increases
-    _half = math.pi/omega_D
+    _x0 = math.pi/omega_D
+    _half = _x0
+    _decay_quarter = math.exp(-0.5*_x0*delta)
     # the k_d spring extends the leg at the bottom
     if not ((A_c < 0.0)):
         return _NAN5 + (STATUS_RECOMPRESSION,)
@@ -66,69 +68,100 @@ def damped_liftoff(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff):
             >= -2.0*delta*m*(-A_c*delta + B_s*omega_D)/k_d + 1.0) else (1.0 - q_r_lo/l0)) < 0.0)):
         return _NAN5 + (STATUS_NO_LIFTOFF,)
     # the leg reaches liftoff within half a damped period
-    if not ((-A_c*math.exp(-_half*delta) + a + ((2.0*delta*m*(A_c*delta*math.exp(-_half*delta)
-            - B_s*omega_D*math.exp(-_half*delta))/k_d) if (liftoff == 0.0) and (q_r_lo/l0
-            >= -2.0*delta*m*(A_c*delta*math.exp(-_half*delta) - B_s*omega_D*math.exp(-_half*delta))/k_d + 1.0)
-            else (1.0 - q_r_lo/l0)) > 0.0)):
+    if not ((-A_c*_decay_quarter**2 + a + ((2.0*delta*m*(A_c*_decay_quarter**2*delta
+            - B_s*_decay_quarter**2*omega_D)/k_d) if (liftoff == 0.0) and (q_r_lo/l0
+            >= -2.0*delta*m*(A_c*_decay_quarter**2*delta - B_s*_decay_quarter**2*omega_D)/k_d + 1.0) else (1.0
+            - q_r_lo/l0)) > 0.0)):
         return _NAN5 + (STATUS_NO_LIFTOFF,)
-    # Newton's method on g, safeguarded by bisection on its bracket
+    # the form of the condition that decides liftoff (c > 0: the force's)
+    _x1 = (liftoff == 0.0) and (delta > 0.0)
+    _x2 = 2.0*m/k_d
+    _x3 = _x2*delta*omega_D
+    _x4 = _x2*delta**2
+    _form_c = ((a) if _x1 else (a + 1.0 - q_r_lo/l0))
+    _form_p = ((-A_c*_x4 + A_c + B_s*_x3) if _x1 else (A_c))
+    _form_q = ((-A_c*_x3 - B_s*_x4 + B_s) if _x1 else (B_s))
+    # the root with the decay frozen at a quarter period (the root itself at c = 0)
+    _x5 = _form_c/(_decay_quarter*math.sqrt(_form_p**2 + _form_q**2))
+    _first = ((math.acos(((-1.0) if (_x5 < -1.0) else (1.0) if (_x5 > 1.0) else (_x5)))
+        + _form_q/_form_p)/omega_D)
+    # the first iterate, inside the bracket
+    _x6 = min(_half, max(0.0, _first))
+    _x7 = _x6*omega_D
+    _tau0 = _x6
+    _cos0 = math.cos(_x7)
+    _sin0 = math.sin(_x7)
+    _exp0 = math.exp(-_x6*delta)
+    # Halley's method on g, safeguarded by bisection on its bracket
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = (math.acos(((-1.0) if ((-a - 1.0 + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else (1.0)
-        if ((-a - 1.0 + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) else ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c)))/omega_D, 0.0, _half, )
+    _pki0 = (_tau0, 0.0, _half, _cos0, _sin0, _exp0, )
     _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
     _last0 = max(int(60.0), 0)
     for _it0 in range(_last0 + 1):
-        (tau, _lo, _hi, ) = _pk0
-        if _it0 == _last0 and not _conv0 and 1e-14 > 0.0 and _passes > 0.0:
+        (tau, _lo, _hi, cos_t, sin_t, exp_t, ) = _pk0
+        if _it0 == _last0 and not _conv0 and 1e-06 > 0.0 and _passes > 0.0:
             return _NAN5 + (STATUS_NOT_CONVERGED,)
-        _x0 = omega_D*tau
-        _x1 = math.cos(_x0)
-        _x2 = math.sin(_x0)
-        _x3 = math.exp(-delta*tau)
-        _x4 = _x1*_x3
-        _x5 = A_c*_x4
-        _x6 = _x2*_x3
-        _x7 = B_s*_x6
-        _x8 = A_c*_x6*omega_D
-        _x9 = -B_s*_x1*_x3*omega_D + _x5*delta + _x7*delta + _x8
-        _x10 = 2.0*delta
-        _x11 = _x10*m/k_d
-        _x12 = -_x11*_x9
-        _x13 = q_r_lo/l0
-        _x14 = (liftoff == 0.0) and (_x13 >= 1.0 - _x12)
-        _x15 = delta**2
-        _x16 = omega_D**2
-        cos_t = _x1
-        sin_t = _x2
-        exp_t = _x3
-        _g = _x5 + _x7 + a + ((_x12) if _x14 else (1.0 - _x13))
-        _dg = (-_x9 + ((_x11*(-B_s*_x10*_x4*omega_D + _x10*_x8 + _x15*_x5 + _x15*_x7 - _x16*_x5 - _x16*_x7))
-            if _x14 else (0.0)))
         if _conv0 or _it0 == _last0:
             break
-        _x17 = (_g < 0.0)
-        _x18 = ((tau) if _x17 else (_lo))
-        _x19 = ((_hi) if _x17 else (tau))
-        _x20 = tau - _g/_dg
-        _lo_next = _x18
-        _hi_next = _x19
-        _newton = _x20
-        _tau_next = ((_x20) if (((_hi >= _x20) and (_x20 >= tau)) if _x17 else ((_lo <= _x20) and (_x20
-            <= tau))) else ((0.5)*_x18 + (0.5)*_x19))
+        # g and its derivatives at the iterate
+        _x8 = cos_t*exp_t
+        _x9 = A_c*_x8
+        _x10 = exp_t*sin_t
+        _x11 = B_s*_x10
+        _x12 = A_c*_x10*omega_D
+        _x13 = -B_s*cos_t*exp_t*omega_D + _x11*delta + _x12 + _x9*delta
+        _x14 = 2.0*delta
+        _x15 = _x14*m/k_d
+        _x16 = -_x13*_x15
+        _x17 = q_r_lo/l0
+        _x18 = (liftoff == 0.0) and (_x17 >= 1.0 - _x16)
+        _x19 = delta**2
+        _x20 = B_s*_x8
+        _x21 = omega_D**2
+        _x22 = _x11*_x19 - _x11*_x21 + _x12*_x14 - _x14*_x20*omega_D + _x19*_x9 - _x21*_x9
+        _x23 = delta**3
+        _x24 = omega_D**3
+        _g = _x11 + _x9 + a + ((_x16) if _x18 else (1.0 - _x17))
+        _dg = -_x13 + ((_x15*_x22) if _x18 else (0.0))
+        _ddg = (_x22 + ((_x15*(3.0*A_c*_x21*cos_t*delta*exp_t + A_c*_x24*exp_t*sin_t
+            + 3.0*B_s*_x19*cos_t*exp_t*omega_D + 3.0*B_s*_x21*delta*exp_t*sin_t - _x11*_x23 - 3.0*_x12*_x19
+            - _x20*_x24 - _x23*_x9)) if _x18 else (0.0)))
+        _x25 = (_g < 0.0)
+        _x26 = ((tau) if _x25 else (_lo))
+        _x27 = ((_hi) if _x25 else (tau))
+        _x28 = -2.0*_dg*_g/(-_ddg*_g + 2.0*_dg**2) + tau
+        _lo_next = _x26
+        _hi_next = _x27
+        _halley = _x28
+        _tau_next = ((_x28) if (((_hi >= _x28) and (_x28 >= tau)) if _x25 else ((_lo <= _x28) and (_x28
+            <= tau))) else ((0.5)*_x26 + (0.5)*_x27))
+        _x29 = _tau_next - tau
+        _du = _x29*omega_D
+        _dv = -_x29*delta
+        # cos, sin, exp at the next iterate: Taylor steps when it is close
+        _x30 = -0.001388888888888889*_du**6 + (0.041666666666666664)*_du**4 - 0.5*_du**2 + 1.0
+        _x31 = (-0.0001984126984126984*_du**7 + (0.008333333333333333)*_du**5 - 0.16666666666666666*_du**3
+            + _du)
+        _x32 = (abs(_du) <= 0.01) and (abs(_dv) <= 0.01)
+        _x33 = _tau_next*omega_D
+        _cos_next = ((_x30*cos_t - _x31*sin_t) if _x32 else (math.cos(_x33)))
+        _sin_next = ((_x30*sin_t + _x31*cos_t) if _x32 else (math.sin(_x33)))
+        _exp_next = ((exp_t*((0.0001984126984126984)*_dv**7 + (0.001388888888888889)*_dv**6
+            + (0.008333333333333333)*_dv**5 + (0.041666666666666664)*_dv**4 + (0.16666666666666666)*_dv**3
+            + (0.5)*_dv**2 + _dv + 1.0)) if _x32 else (math.exp(-_tau_next*delta)))
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 1e-14 > 0.0 and (abs(_tau_next - tau) <= 1e-14*(_half))
-        _pkn0 = (_tau_next, _lo_next, _hi_next, )
+        _conv0 = 1e-06 > 0.0 and (abs(_tau_next - tau) <= 1e-06*(_half))
+        _pkn0 = (_tau_next, _lo_next, _hi_next, _cos_next, _sin_next, _exp_next, )
         _pk0 = _pkn0
         _passes += 1.0
     # 1 where the leg force decides liftoff, 0 where q_r = q_r_lo does
-    _x21 = exp_t*sin_t
-    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x21*omega_D
-        - A_c*cos_t*delta*exp_t - B_s*_x21*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
+    _x34 = exp_t*sin_t
+    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x34*omega_D
+        - A_c*cos_t*delta*exp_t - B_s*_x34*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
     # (internal helper: its callers check that their outputs are finite)
     return (tau, cos_t, sin_t, exp_t, by_force, STATUS_OK)
 
@@ -144,7 +177,7 @@ def geyer_damped_stance(x, p, out):
     omega_n^2 rho = omega^2 - g_s / l0 (delta = c / (2 m), omega_n^2 = k / m + 3 omega^2),
     solved from the touchdown state with k_c and from the bottom with k_d; the bottom in closed
     form; the leg angle (18)-(19) integrated over the damped rho; liftoff where the leg force or
-    q_r - q_r_lo reaches 0 (option liftoff), by Newton's method safeguarded by bisection; option
+    q_r - q_r_lo reaches 0 (option liftoff), by Halley's method safeguarded by bisection; option
     gravity adds a virtual gravity effect of section 4 (types 0-4) on each half.
 
     Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record

@@ -33,7 +33,7 @@ NAN = math.nan
 def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff,
         out):
     """Liftoff of the damped decompression half: the first zero of the leg force (or of q_r - q_r_lo) after
-    the bottom, safeguarded Newton, and the derivatives of its outputs with respect to a, omega_D, A_c, B_s,
+    the bottom, safeguarded Halley, and the derivatives of its outputs with respect to a, omega_D, A_c, B_s,
     delta, k_d.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
@@ -48,11 +48,17 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
             (returned).
     """
-    # Total ops: 446
+    # Total ops: 1099
     # liftoff lies in (0, pi / omega_D) after the bottom, where rho increases
-    _x0 = (1.0/omega_D)
-    _half = math.pi*_x0
-    _d_half__omega_D = -math.pi*_x0**2
+    _x3 = (1.0/omega_D)
+    _x0 = math.pi*_x3
+    _half = _x0
+    _d_half__omega_D = -math.pi*_x3**2
+    _x1 = (0.5)*delta
+    _x2 = math.exp(-_x0*_x1)
+    _decay_quarter = _x2
+    _d_decay_quarter__omega_D = -_d_half__omega_D*_x1*_x2
+    _d_decay_quarter__delta = -0.5*_x0*_x2
     # the k_d spring extends the leg at the bottom
     if not ((A_c < 0.0)):
         return fail(out, STATUS_RECOMPRESSION)
@@ -61,225 +67,412 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
             >= -2.0*delta*m*(-A_c*delta + B_s*omega_D)/k_d + 1.0) else (1.0 - q_r_lo/l0)) < 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)
     # the leg reaches liftoff within half a damped period
-    if not ((-A_c*math.exp(-_half*delta) + a + ((2.0*delta*m*(A_c*delta*math.exp(-_half*delta)
-            - B_s*omega_D*math.exp(-_half*delta))/k_d) if (liftoff == 0.0) and (q_r_lo/l0
-            >= -2.0*delta*m*(A_c*delta*math.exp(-_half*delta) - B_s*omega_D*math.exp(-_half*delta))/k_d + 1.0)
-            else (1.0 - q_r_lo/l0)) > 0.0)):
+    if not ((-A_c*_decay_quarter**2 + a + ((2.0*delta*m*(A_c*_decay_quarter**2*delta
+            - B_s*_decay_quarter**2*omega_D)/k_d) if (liftoff == 0.0) and (q_r_lo/l0
+            >= -2.0*delta*m*(A_c*_decay_quarter**2*delta - B_s*_decay_quarter**2*omega_D)/k_d + 1.0) else (1.0
+            - q_r_lo/l0)) > 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)
-    # Newton's method on g, safeguarded by bisection on its bracket
+    # the form of the condition that decides liftoff (c > 0: the force's)
+    _x4 = (liftoff == 0.0) and (delta > 0.0)
+    _form_c = ((a) if _x4 else (a + 1.0 - q_r_lo/l0))
+    _x5 = (1.0/k_d)
+    _x6 = _x5*m
+    _x7 = 2.0*_x6
+    _x8 = _x7*delta
+    _x9 = B_s*_x8
+    _x10 = delta**2
+    _x11 = _x10*_x7
+    _form_p = ((-A_c*_x11 + A_c + _x9*omega_D) if _x4 else (A_c))
+    _d_form_p__omega_D = ((_x9) if _x4 else (0.0))
+    _x12 = ((1.0 - _x11) if _x4 else (1.0))
+    _d_form_p__A_c = _x12
+    _x13 = _x8*omega_D
+    _d_form_p__B_s = ((_x13) if _x4 else (0.0))
+    _x14 = A_c*delta
+    _x15 = 4.0*_x6
+    _d_form_p__delta = ((2.0*B_s*_x5*m*omega_D - _x14*_x15) if _x4 else (0.0))
+    _x16 = B_s*delta
+    _x17 = 2.0*_x5**2*m
+    _x18 = _x17*omega_D
+    _x19 = _x10*_x17
+    _d_form_p__k_d = ((A_c*_x19 - _x16*_x18) if _x4 else (0.0))
+    _form_q = ((-A_c*_x13 - B_s*_x11 + B_s) if _x4 else (B_s))
+    _d_form_q__omega_D = ((-A_c*_x8) if _x4 else (0.0))
+    _d_form_q__A_c = ((-_x13) if _x4 else (0.0))
+    _d_form_q__B_s = _x12
+    _d_form_q__delta = ((-A_c*_x7*omega_D - _x15*_x16) if _x4 else (0.0))
+    _d_form_q__k_d = ((B_s*_x19 + _x14*_x18) if _x4 else (0.0))
+    # the root with the decay frozen at a quarter period (the root itself at c = 0)
+    _x20 = (1.0/omega_D)
+    _x21 = (1.0/_form_p)
+    _x22 = (1.0/_decay_quarter)
+    _x23 = _form_p**2
+    _x24 = _form_q**2 + _x23
+    _x25 = (1.0/math.sqrt(_x24))
+    _x26 = _x22*_x25
+    _x27 = _form_c*_x26
+    _x28 = (_x27 < -1.0)
+    _x29 = (_x27 > 1.0)
+    _x30 = _form_q*_x21 + math.acos(((-1.0) if _x28 else (1.0) if _x29 else (_x27)))
+    _first = _x20*_x30
+    _x31 = _x28 or _x29
+    _x32 = _x22**2
+    _x33 = (1.0/math.sqrt(1.0 - ((1.0) if _x31 else (_form_c**2*_x32/_x24))))
+    _x34 = _x20*_x33
+    _pd__0 = -_x34*((0.0) if _x31 else (-_form_c*_x25*_x32))
+    _x35 = _form_c*_x22/(_x24*math.sqrt(_x24))
+    _pd__1 = _x20*(-_form_q/_x23 - _x33*((0.0) if _x31 else (-_form_p*_x35)))
+    _pd__2 = _x20*(_x21 - _x33*((0.0) if _x31 else (-_form_q*_x35)))
+    _d_first__a = -_x34*((0.0) if _x31 else (_x26))
+    _d_first__omega_D = (_d_decay_quarter__omega_D*_pd__0 + _d_form_p__omega_D*_pd__1
+        + _d_form_q__omega_D*_pd__2 - _x20**2*_x30)
+    _d_first__A_c = _d_form_p__A_c*_pd__1 + _d_form_q__A_c*_pd__2
+    _d_first__B_s = _d_form_p__B_s*_pd__1 + _d_form_q__B_s*_pd__2
+    _d_first__delta = _d_decay_quarter__delta*_pd__0 + _d_form_p__delta*_pd__1 + _d_form_q__delta*_pd__2
+    _d_first__k_d = _d_form_p__k_d*_pd__1 + _d_form_q__k_d*_pd__2
+    # the first iterate, inside the bracket
+    _x36 = max(0.0, _first)
+    _x37 = min(_half, _x36)
+    _tau0 = _x37
+    _x38 = _half - _x36
+    _pd__3 = ((((0.0) if (_first < 0.0) else (0.5) if (_first == 0.0) else (1.0)))*(((0.0) if (_x38 < 0.0)
+        else (0.5) if (_x38 == 0.0) else (1.0))))
+    _d_tau0__a = _d_first__a*_pd__3
+    _d_tau0__omega_D = (_d_first__omega_D*_pd__3 + _d_half__omega_D*(((0.0) if (_x38 > 0.0) else (0.5)
+        if (_x38 == 0.0) else (1.0))))
+    _d_tau0__A_c = _d_first__A_c*_pd__3
+    _d_tau0__B_s = _d_first__B_s*_pd__3
+    _d_tau0__delta = _d_first__delta*_pd__3
+    _d_tau0__k_d = _d_first__k_d*_pd__3
+    _x39 = _x37*omega_D
+    _x40 = math.cos(_x39)
+    _cos0 = _x40
+    _x41 = math.sin(_x39)
+    _pd__4 = -_x41*omega_D
+    _d_cos0__a = _d_tau0__a*_pd__4
+    _d_cos0__omega_D = _d_tau0__omega_D*_pd__4 - _x37*_x41
+    _d_cos0__A_c = _d_tau0__A_c*_pd__4
+    _d_cos0__B_s = _d_tau0__B_s*_pd__4
+    _d_cos0__delta = _d_tau0__delta*_pd__4
+    _d_cos0__k_d = _d_tau0__k_d*_pd__4
+    _sin0 = _x41
+    _pd__5 = _x40*omega_D
+    _d_sin0__a = _d_tau0__a*_pd__5
+    _d_sin0__omega_D = _d_tau0__omega_D*_pd__5 + _x37*_x40
+    _d_sin0__A_c = _d_tau0__A_c*_pd__5
+    _d_sin0__B_s = _d_tau0__B_s*_pd__5
+    _d_sin0__delta = _d_tau0__delta*_pd__5
+    _d_sin0__k_d = _d_tau0__k_d*_pd__5
+    _x42 = math.exp(-_x37*delta)
+    _exp0 = _x42
+    _pd__6 = -_x42*delta
+    _d_exp0__a = _d_tau0__a*_pd__6
+    _d_exp0__omega_D = _d_tau0__omega_D*_pd__6
+    _d_exp0__A_c = _d_tau0__A_c*_pd__6
+    _d_exp0__B_s = _d_tau0__B_s*_pd__6
+    _d_exp0__delta = _d_tau0__delta*_pd__6 - _x37*_x42
+    _d_exp0__k_d = _d_tau0__k_d*_pd__6
+    # Halley's method on g, safeguarded by bisection on its bracket
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = (math.acos(((-1.0) if ((-a - 1.0 + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else (1.0)
-        if ((-a - 1.0 + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) else ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c)))/omega_D, 0.0, _half, -((0.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0)
-        else (-math.exp((0.5)*_half*delta)/A_c))/(omega_D*math.sqrt(1.0 - ((1.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else ((-a - 1.0
-        + q_r_lo/l0)**2*math.exp(_half*delta)/A_c**2)))), -_d_half__omega_D*((0.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else ((0.5)*delta*(-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c))/(omega_D*math.sqrt(1.0 - ((1.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else ((-a - 1.0
-        + q_r_lo/l0)**2*math.exp(_half*delta)/A_c**2)))) - math.acos(((-1.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else (1.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) else ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c)))/omega_D**2, -((0.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else (-(-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c**2))/(omega_D*math.sqrt(1.0 - ((1.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else ((-a - 1.0
-        + q_r_lo/l0)**2*math.exp(_half*delta)/A_c**2)))), 0.0, -((0.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else ((0.5)*_half*(-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c))/(omega_D*math.sqrt(1.0 - ((1.0) if ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c > 1.0) or ((-a - 1.0
-        + q_r_lo/l0)*math.exp((0.5)*_half*delta)/A_c < -1.0) else ((-a - 1.0
-        + q_r_lo/l0)**2*math.exp(_half*delta)/A_c**2)))), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-        _d_half__omega_D, 0.0, 0.0, 0.0, 0.0, )
+    _pki0 = (_tau0, 0.0, _half, _cos0, _sin0, _exp0, _d_tau0__a, _d_tau0__omega_D, _d_tau0__A_c, _d_tau0__B_s,
+        _d_tau0__delta, _d_tau0__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _d_half__omega_D, 0.0, 0.0, 0.0, 0.0,
+        _d_cos0__a, _d_cos0__omega_D, _d_cos0__A_c, _d_cos0__B_s, _d_cos0__delta, _d_cos0__k_d, _d_sin0__a,
+        _d_sin0__omega_D, _d_sin0__A_c, _d_sin0__B_s, _d_sin0__delta, _d_sin0__k_d, _d_exp0__a,
+        _d_exp0__omega_D, _d_exp0__A_c, _d_exp0__B_s, _d_exp0__delta, _d_exp0__k_d, )
     _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
     _last0 = max(int(60.0), 0)
     for _it0 in range(_last0 + 1):
-        (tau, _lo, _hi, d_tau__a, d_tau__omega_D, d_tau__A_c, d_tau__B_s, d_tau__delta, d_tau__k_d, _d_lo__a,
-            _d_lo__omega_D, _d_lo__A_c, _d_lo__B_s, _d_lo__delta, _d_lo__k_d, _d_hi__a, _d_hi__omega_D,
-            _d_hi__A_c, _d_hi__B_s, _d_hi__delta, _d_hi__k_d, ) = _pk0
-        if _it0 == _last0 and not _conv0 and 1e-14 > 0.0 and _passes > 0.0:
+        (tau, _lo, _hi, cos_t, sin_t, exp_t, d_tau__a, d_tau__omega_D, d_tau__A_c, d_tau__B_s, d_tau__delta,
+            d_tau__k_d, _d_lo__a, _d_lo__omega_D, _d_lo__A_c, _d_lo__B_s, _d_lo__delta, _d_lo__k_d, _d_hi__a,
+            _d_hi__omega_D, _d_hi__A_c, _d_hi__B_s, _d_hi__delta, _d_hi__k_d, d_cos_t__a, d_cos_t__omega_D,
+            d_cos_t__A_c, d_cos_t__B_s, d_cos_t__delta, d_cos_t__k_d, d_sin_t__a, d_sin_t__omega_D,
+            d_sin_t__A_c, d_sin_t__B_s, d_sin_t__delta, d_sin_t__k_d, d_exp_t__a, d_exp_t__omega_D,
+            d_exp_t__A_c, d_exp_t__B_s, d_exp_t__delta, d_exp_t__k_d, ) = _pk0
+        if _it0 == _last0 and not _conv0 and 1e-06 > 0.0 and _passes > 0.0:
             return fail(out, STATUS_NOT_CONVERGED)
-        _x1 = omega_D*tau
-        _x2 = math.cos(_x1)
-        cos_t = _x2
-        _x3 = math.sin(_x1)
-        _x4 = _x3*omega_D
-        _pd__0 = -_x4
-        d_cos_t__a = _pd__0*d_tau__a
-        d_cos_t__omega_D = _pd__0*d_tau__omega_D - _x3*tau
-        d_cos_t__A_c = _pd__0*d_tau__A_c
-        d_cos_t__B_s = _pd__0*d_tau__B_s
-        d_cos_t__delta = _pd__0*d_tau__delta
-        d_cos_t__k_d = _pd__0*d_tau__k_d
-        sin_t = _x3
-        _x5 = _x2*omega_D
-        _pd__1 = _x5
-        d_sin_t__a = _pd__1*d_tau__a
-        d_sin_t__omega_D = _pd__1*d_tau__omega_D + _x2*tau
-        d_sin_t__A_c = _pd__1*d_tau__A_c
-        d_sin_t__B_s = _pd__1*d_tau__B_s
-        d_sin_t__delta = _pd__1*d_tau__delta
-        d_sin_t__k_d = _pd__1*d_tau__k_d
-        _x6 = math.exp(-delta*tau)
-        exp_t = _x6
-        _x7 = _x6*delta
-        _pd__2 = -_x7
-        d_exp_t__a = _pd__2*d_tau__a
-        d_exp_t__omega_D = _pd__2*d_tau__omega_D
-        d_exp_t__A_c = _pd__2*d_tau__A_c
-        d_exp_t__B_s = _pd__2*d_tau__B_s
-        d_exp_t__delta = _pd__2*d_tau__delta - _x6*tau
-        d_exp_t__k_d = _pd__2*d_tau__k_d
-        _x8 = A_c*_x2
-        _x9 = _x7*_x8
-        _x10 = A_c*_x6
-        _x11 = _x10*_x4
-        _x12 = B_s*_x3
-        _x13 = _x12*_x7
-        _x14 = -B_s*_x2*_x6*omega_D + _x11 + _x13 + _x9
-        _x15 = -_x14
-        _x16 = 2.0*m
-        _x48 = (1.0/k_d)
-        _x17 = _x16*_x48
-        _x18 = _x15*_x17
-        _x19 = _x18*delta
-        _x20 = q_r_lo/l0
-        _x21 = (liftoff == 0.0) and (_x20 >= 1.0 - _x19)
-        _x22 = _x10*_x2
-        _x23 = _x12*_x6
-        _x24 = _x22 + _x23
-        _g = _x24 + a + ((_x19) if _x21 else (1.0 - _x20))
-        _x25 = A_c*_x7
-        _x26 = _x17*delta
-        _pd__3 = _x10 + ((_x26*(B_s*_x6*omega_D - _x25)) if _x21 else (0.0))
-        _x27 = A_c*_x4
-        _x28 = -B_s*_x2*omega_D + _x12*delta + _x27 + _x8*delta
-        _pd__4 = _x12 + _x8 + ((-_x26*_x28) if _x21 else (0.0))
-        _x29 = B_s*_x6
-        _x30 = B_s*_x7
-        _x31 = _x10*omega_D + _x30
-        _pd__5 = _x29 + ((-_x26*_x31) if _x21 else (0.0))
-        _d_g__a = _pd__3*d_cos_t__a + _pd__4*d_exp_t__a + _pd__5*d_sin_t__a + 1.0
-        _x32 = _x10*_x3
-        _d_g__omega_D = (_pd__3*d_cos_t__omega_D + _pd__4*d_exp_t__omega_D + _pd__5*d_sin_t__omega_D
-            + ((_x26*(B_s*_x2*_x6 - _x32)) if _x21 else (0.0)))
-        _x33 = _x2*_x6
-        _x34 = _x2*_x7
-        _x35 = _x4*_x6
-        _d_g__A_c = (_pd__3*d_cos_t__A_c + _pd__4*d_exp_t__A_c + _pd__5*d_sin_t__A_c + _x33 + ((_x26*(-_x34
-            - _x35)) if _x21 else (0.0)))
-        _x36 = _x3*_x6
-        _x37 = _x3*_x7
-        _d_g__B_s = (_pd__3*d_cos_t__B_s + _pd__4*d_exp_t__B_s + _pd__5*d_sin_t__B_s + _x36
-            + ((_x26*(_x2*_x6*omega_D - _x37)) if _x21 else (0.0)))
-        _d_g__delta = (_pd__3*d_cos_t__delta + _pd__4*d_exp_t__delta + _pd__5*d_sin_t__delta + ((_x18
-            - _x24*_x26) if _x21 else (0.0)))
-        _x38 = _x16*_x48**2*delta
-        _d_g__k_d = (_pd__3*d_cos_t__k_d + _pd__4*d_exp_t__k_d + _pd__5*d_sin_t__k_d + ((-_x15*_x38) if _x21
-            else (0.0)))
-        _x39 = delta**2
-        _x40 = 2.0*_x4
-        _x41 = B_s*_x5
-        _x42 = omega_D**2
-        _x43 = _x22*_x39 - _x22*_x42 + _x23*_x39 - _x23*_x42 + _x25*_x40 - 2.0*_x41*_x7
-        _x44 = _x17*_x43
-        _dg = -_x14 + ((_x44*delta) if _x21 else (0.0))
-        _x45 = 2.0*omega_D
-        _pd__6 = -_x25 + _x29*omega_D + ((_x26*(A_c*_x39*_x6 - _x10*_x42 - _x30*_x45)) if _x21 else (0.0))
-        _x46 = 2.0*delta
-        _pd__7 = (-_x28 + ((_x26*(_x12*_x39 - _x12*_x42 + _x27*_x46 + _x39*_x8 - _x41*_x46 - _x42*_x8))
-            if _x21 else (0.0)))
-        _pd__8 = -_x31 + ((_x26*(_x25*_x45 + _x29*_x39 - _x29*_x42)) if _x21 else (0.0))
-        _d_dg__a = _pd__6*d_cos_t__a + _pd__7*d_exp_t__a + _pd__8*d_sin_t__a
-        _x47 = 2.0*_x5
-        _d_dg__omega_D = (_pd__6*d_cos_t__omega_D + _pd__7*d_exp_t__omega_D + _pd__8*d_sin_t__omega_D
-            + _x2*_x29 - _x32 + ((_x26*(2.0*A_c*_x3*_x6*delta - _x10*_x47 - 2.0*_x2*_x30 - _x29*_x40)) if _x21
-            else (0.0)))
-        _d_dg__A_c = (_pd__6*d_cos_t__A_c + _pd__7*d_exp_t__A_c + _pd__8*d_sin_t__A_c - _x34 - _x35
-            + ((_x26*(_x33*_x39 - _x33*_x42 + _x40*_x7)) if _x21 else (0.0)))
-        _d_dg__B_s = (_pd__6*d_cos_t__B_s + _pd__7*d_exp_t__B_s + _pd__8*d_sin_t__B_s - _x37 + _x5*_x6
-            + ((_x26*(_x3*_x39*_x6 - _x36*_x42 - _x47*_x7)) if _x21 else (0.0)))
-        _d_dg__delta = (_pd__6*d_cos_t__delta + _pd__7*d_exp_t__delta + _pd__8*d_sin_t__delta - _x22 - _x23
-            + ((_x26*(2.0*_x11 + 2.0*_x13 - 2.0*_x29*_x5 + 2.0*_x9) + _x44) if _x21 else (0.0)))
-        _d_dg__k_d = (_pd__6*d_cos_t__k_d + _pd__7*d_exp_t__k_d + _pd__8*d_sin_t__k_d + ((-_x38*_x43) if _x21
-            else (0.0)))
         if _conv0 or _it0 == _last0:
             break
-        _x49 = (_g < 0.0)
-        _x50 = ((tau) if _x49 else (_lo))
-        _lo_next = _x50
-        _x51 = ((0.0) if _x49 else (1.0))
-        _pd__9 = _x51
-        _x52 = ((1.0) if _x49 else (0.0))
-        _pd__10 = _x52
-        _d_lo_next__a = _d_lo__a*_pd__9 + _pd__10*d_tau__a
-        _d_lo_next__omega_D = _d_lo__omega_D*_pd__9 + _pd__10*d_tau__omega_D
-        _d_lo_next__A_c = _d_lo__A_c*_pd__9 + _pd__10*d_tau__A_c
-        _d_lo_next__B_s = _d_lo__B_s*_pd__9 + _pd__10*d_tau__B_s
-        _d_lo_next__delta = _d_lo__delta*_pd__9 + _pd__10*d_tau__delta
-        _d_lo_next__k_d = _d_lo__k_d*_pd__9 + _pd__10*d_tau__k_d
-        _x53 = ((_hi) if _x49 else (tau))
-        _hi_next = _x53
-        _pd__11 = _x52
-        _pd__12 = _x51
-        _d_hi_next__a = _d_hi__a*_pd__11 + _pd__12*d_tau__a
-        _d_hi_next__omega_D = _d_hi__omega_D*_pd__11 + _pd__12*d_tau__omega_D
-        _d_hi_next__A_c = _d_hi__A_c*_pd__11 + _pd__12*d_tau__A_c
-        _d_hi_next__B_s = _d_hi__B_s*_pd__11 + _pd__12*d_tau__B_s
-        _d_hi_next__delta = _d_hi__delta*_pd__11 + _pd__12*d_tau__delta
-        _d_hi_next__k_d = _d_hi__k_d*_pd__11 + _pd__12*d_tau__k_d
-        _x54 = (1.0/_dg)
-        _x55 = -_g*_x54 + tau
-        _newton = _x55
-        _pd__13 = _g*_x54**2
-        _pd__14 = -_x54
-        _d_newton__a = _d_dg__a*_pd__13 + _d_g__a*_pd__14 + d_tau__a
-        _d_newton__omega_D = _d_dg__omega_D*_pd__13 + _d_g__omega_D*_pd__14 + d_tau__omega_D
-        _d_newton__A_c = _d_dg__A_c*_pd__13 + _d_g__A_c*_pd__14 + d_tau__A_c
-        _d_newton__B_s = _d_dg__B_s*_pd__13 + _d_g__B_s*_pd__14 + d_tau__B_s
-        _d_newton__delta = _d_dg__delta*_pd__13 + _d_g__delta*_pd__14 + d_tau__delta
-        _d_newton__k_d = _d_dg__k_d*_pd__13 + _d_g__k_d*_pd__14 + d_tau__k_d
-        _x56 = (((_hi >= _x55) and (tau <= _x55)) if _x49 else ((tau >= _x55) and (_lo <= _x55)))
-        _tau_next = ((_x55) if _x56 else ((0.5)*_x50 + (0.5)*_x53))
-        _x57 = ((0.0) if _x56 else (0.5))
-        _pd__15 = _x57
-        _pd__16 = _x57
-        _pd__17 = ((1.0) if _x56 else (0.0))
-        _d_tau_next__a = _d_hi_next__a*_pd__15 + _d_lo_next__a*_pd__16 + _d_newton__a*_pd__17
-        _d_tau_next__omega_D = (_d_hi_next__omega_D*_pd__15 + _d_lo_next__omega_D*_pd__16
-            + _d_newton__omega_D*_pd__17)
-        _d_tau_next__A_c = _d_hi_next__A_c*_pd__15 + _d_lo_next__A_c*_pd__16 + _d_newton__A_c*_pd__17
-        _d_tau_next__B_s = _d_hi_next__B_s*_pd__15 + _d_lo_next__B_s*_pd__16 + _d_newton__B_s*_pd__17
-        _d_tau_next__delta = _d_hi_next__delta*_pd__15 + _d_lo_next__delta*_pd__16 + _d_newton__delta*_pd__17
-        _d_tau_next__k_d = _d_hi_next__k_d*_pd__15 + _d_lo_next__k_d*_pd__16 + _d_newton__k_d*_pd__17
+        # g and its derivatives at the iterate
+        _x43 = A_c*exp_t
+        _x44 = _x43*cos_t
+        _x45 = _x44*delta
+        _x46 = _x43*omega_D
+        _x47 = _x46*sin_t
+        _x48 = B_s*sin_t
+        _x49 = _x48*exp_t
+        _x50 = _x49*delta
+        _x51 = -B_s*cos_t*exp_t*omega_D + _x45 + _x47 + _x50
+        _x52 = -_x51
+        _x53 = 2.0*m
+        _x109 = (1.0/k_d)
+        _x54 = _x109*_x53
+        _x55 = _x52*_x54
+        _x56 = _x55*delta
+        _x57 = q_r_lo/l0
+        _x58 = (liftoff == 0.0) and (_x57 >= 1.0 - _x56)
+        _x59 = _x44 + _x49
+        _g = _x59 + a + ((_x56) if _x58 else (1.0 - _x57))
+        _x60 = _x43*delta
+        _x61 = _x54*delta
+        _pd__7 = _x43 + ((_x61*(B_s*exp_t*omega_D - _x60)) if _x58 else (0.0))
+        _x62 = A_c*cos_t
+        _x63 = A_c*omega_D*sin_t
+        _x64 = -B_s*cos_t*omega_D + _x48*delta + _x62*delta + _x63
+        _pd__8 = _x48 + _x62 + ((-_x61*_x64) if _x58 else (0.0))
+        _x65 = B_s*exp_t
+        _x66 = _x65*delta
+        _x67 = _x46 + _x66
+        _pd__9 = _x65 + ((-_x61*_x67) if _x58 else (0.0))
+        _d_g__a = _pd__7*d_cos_t__a + _pd__8*d_exp_t__a + _pd__9*d_sin_t__a + 1.0
+        _x68 = _x43*sin_t
+        _d_g__omega_D = (_pd__7*d_cos_t__omega_D + _pd__8*d_exp_t__omega_D + _pd__9*d_sin_t__omega_D
+            + ((_x61*(B_s*cos_t*exp_t - _x68)) if _x58 else (0.0)))
+        _x69 = cos_t*exp_t
+        _x70 = _x69*delta
+        _x71 = exp_t*sin_t
+        _x72 = _x71*omega_D
+        _d_g__A_c = (_pd__7*d_cos_t__A_c + _pd__8*d_exp_t__A_c + _pd__9*d_sin_t__A_c + _x69 + ((_x61*(-_x70
+            - _x72)) if _x58 else (0.0)))
+        _x73 = _x69*omega_D
+        _x74 = _x71*delta
+        _x75 = _x73 - _x74
+        _d_g__B_s = (_pd__7*d_cos_t__B_s + _pd__8*d_exp_t__B_s + _pd__9*d_sin_t__B_s + _x71 + ((_x61*_x75)
+            if _x58 else (0.0)))
+        _d_g__delta = (_pd__7*d_cos_t__delta + _pd__8*d_exp_t__delta + _pd__9*d_sin_t__delta + ((_x55
+            - _x59*_x61) if _x58 else (0.0)))
+        _x76 = _x109**2*_x53*delta
+        _d_g__k_d = (_pd__7*d_cos_t__k_d + _pd__8*d_exp_t__k_d + _pd__9*d_sin_t__k_d + ((-_x52*_x76) if _x58
+            else (0.0)))
+        _x77 = delta**2
+        _x78 = _x44*_x77
+        _x79 = _x49*_x77
+        _x80 = 2.0*omega_D
+        _x81 = _x60*_x80
+        _x82 = _x65*omega_D
+        _x83 = _x82*cos_t
+        _x84 = 2.0*delta
+        _x85 = omega_D**2
+        _x86 = -_x44*_x85 - _x49*_x85 + _x78 + _x79 + _x81*sin_t - _x83*_x84
+        _x87 = _x54*_x86
+        _dg = -_x51 + ((_x87*delta) if _x58 else (0.0))
+        _x88 = _x43*_x85
+        _x89 = _x82*_x84
+        _pd__10 = -_x60 + _x82 + ((_x61*(A_c*_x77*exp_t - _x88 - _x89)) if _x58 else (0.0))
+        _x90 = B_s*cos_t
+        _x91 = _x48*_x77 - _x48*_x85 + _x62*_x77 - _x62*_x85 + _x63*_x84 - _x84*_x90*omega_D
+        _pd__11 = -_x64 + ((_x61*_x91) if _x58 else (0.0))
+        _x92 = _x65*_x77 - _x65*_x85 + _x81
+        _pd__12 = -_x67 + ((_x61*_x92) if _x58 else (0.0))
+        _d_dg__a = _pd__10*d_cos_t__a + _pd__11*d_exp_t__a + _pd__12*d_sin_t__a
+        _x93 = _x65*cos_t
+        _x94 = _x44*_x80
+        _x95 = 2.0*_x66*cos_t
+        _x96 = _x49*_x80
+        _d_dg__omega_D = (_pd__10*d_cos_t__omega_D + _pd__11*d_exp_t__omega_D + _pd__12*d_sin_t__omega_D
+            - _x68 + _x93 + ((_x61*(2.0*A_c*delta*exp_t*sin_t - _x94 - _x95 - _x96)) if _x58 else (0.0)))
+        _x97 = _x69*_x77 - _x69*_x85 + _x72*_x84
+        _d_dg__A_c = (_pd__10*d_cos_t__A_c + _pd__11*d_exp_t__A_c + _pd__12*d_sin_t__A_c - _x70 - _x72
+            + ((_x61*_x97) if _x58 else (0.0)))
+        _x98 = _x71*_x85
+        _x99 = _x70*_x80
+        _d_dg__B_s = (_pd__10*d_cos_t__B_s + _pd__11*d_exp_t__B_s + _pd__12*d_sin_t__B_s + _x75
+            + ((_x61*(_x77*exp_t*sin_t - _x98 - _x99)) if _x58 else (0.0)))
+        _x100 = 2.0*_x45 + 2.0*_x47 + 2.0*_x50 - 2.0*_x83
+        _d_dg__delta = (_pd__10*d_cos_t__delta + _pd__11*d_exp_t__delta + _pd__12*d_sin_t__delta - _x44 - _x49
+            + ((_x100*_x61 + _x87) if _x58 else (0.0)))
+        _d_dg__k_d = (_pd__10*d_cos_t__k_d + _pd__11*d_exp_t__k_d + _pd__12*d_sin_t__k_d + ((-_x76*_x86)
+            if _x58 else (0.0)))
+        _x101 = delta**3
+        _x102 = omega_D**3
+        _x103 = 3.0*_x77
+        _x104 = (A_c*_x102*exp_t*sin_t + 3.0*A_c*_x85*cos_t*delta*exp_t + 3.0*B_s*_x77*cos_t*exp_t*omega_D
+            + 3.0*B_s*_x85*delta*exp_t*sin_t - _x101*_x44 - _x101*_x49 - _x102*_x93 - _x103*_x47)
+        _x105 = _x104*_x54
+        _ddg = _x86 + ((_x105*delta) if _x58 else (0.0))
+        _pd__13 = (_x43*_x77 - _x88 - _x89 + ((_x61*(3.0*A_c*_x85*delta*exp_t + 3.0*B_s*_x77*exp_t*omega_D
+            - _x101*_x43 - _x102*_x65)) if _x58 else (0.0)))
+        _pd__14 = (_x91 + ((_x61*(A_c*_x102*sin_t + 3.0*A_c*_x85*cos_t*delta + 3.0*B_s*_x77*cos_t*omega_D
+            + 3.0*B_s*_x85*delta*sin_t - _x101*_x48 - _x101*_x62 - _x102*_x90 - _x103*_x63)) if _x58
+            else (0.0)))
+        _pd__15 = (_x92 + ((_x61*(A_c*_x102*exp_t + 3.0*B_s*_x85*delta*exp_t - _x101*_x65 - _x103*_x46))
+            if _x58 else (0.0)))
+        _d_ddg__a = _pd__13*d_cos_t__a + _pd__14*d_exp_t__a + _pd__15*d_sin_t__a
+        _x106 = _x60*sin_t
+        _x107 = 6.0*omega_D
+        _x108 = 3.0*_x85
+        _d_ddg__omega_D = (_pd__13*d_cos_t__omega_D + _pd__14*d_exp_t__omega_D + _pd__15*d_sin_t__omega_D
+            + 2.0*_x106 - _x94 - _x95 - _x96 + ((_x61*(-_x103*_x68 + _x103*_x93 + _x107*_x45 + _x107*_x50
+            + _x108*_x68 - _x108*_x93)) if _x58 else (0.0)))
+        _d_ddg__A_c = (_pd__13*d_cos_t__A_c + _pd__14*d_exp_t__A_c + _pd__15*d_sin_t__A_c + _x97
+            + ((_x61*(-_x101*_x69 + _x102*exp_t*sin_t - _x103*_x72 + 3.0*_x85*cos_t*delta*exp_t)) if _x58
+            else (0.0)))
+        _d_ddg__B_s = (_pd__13*d_cos_t__B_s + _pd__14*d_exp_t__B_s + _pd__15*d_sin_t__B_s + _x71*_x77 - _x98
+            - _x99 + ((_x61*(-_x101*_x71 - _x102*_x69 + _x103*_x73 + _x108*_x74)) if _x58 else (0.0)))
+        _d_ddg__delta = (_pd__13*d_cos_t__delta + _pd__14*d_exp_t__delta + _pd__15*d_sin_t__delta + _x100
+            + ((_x105 + _x61*(3.0*A_c*_x85*cos_t*exp_t + 3.0*B_s*_x85*exp_t*sin_t
+            + 6.0*B_s*cos_t*delta*exp_t*omega_D - _x106*_x107 - 3.0*_x78 - 3.0*_x79)) if _x58 else (0.0)))
+        _d_ddg__k_d = (_pd__13*d_cos_t__k_d + _pd__14*d_exp_t__k_d + _pd__15*d_sin_t__k_d + ((-_x104*_x76)
+            if _x58 else (0.0)))
+        _x110 = (_g < 0.0)
+        _x111 = ((tau) if _x110 else (_lo))
+        _lo_next = _x111
+        _x112 = ((0.0) if _x110 else (1.0))
+        _pd__16 = _x112
+        _x113 = ((1.0) if _x110 else (0.0))
+        _pd__17 = _x113
+        _d_lo_next__a = _d_lo__a*_pd__16 + _pd__17*d_tau__a
+        _d_lo_next__omega_D = _d_lo__omega_D*_pd__16 + _pd__17*d_tau__omega_D
+        _d_lo_next__A_c = _d_lo__A_c*_pd__16 + _pd__17*d_tau__A_c
+        _d_lo_next__B_s = _d_lo__B_s*_pd__16 + _pd__17*d_tau__B_s
+        _d_lo_next__delta = _d_lo__delta*_pd__16 + _pd__17*d_tau__delta
+        _d_lo_next__k_d = _d_lo__k_d*_pd__16 + _pd__17*d_tau__k_d
+        _x114 = ((_hi) if _x110 else (tau))
+        _hi_next = _x114
+        _pd__18 = _x113
+        _pd__19 = _x112
+        _d_hi_next__a = _d_hi__a*_pd__18 + _pd__19*d_tau__a
+        _d_hi_next__omega_D = _d_hi__omega_D*_pd__18 + _pd__19*d_tau__omega_D
+        _d_hi_next__A_c = _d_hi__A_c*_pd__18 + _pd__19*d_tau__A_c
+        _d_hi_next__B_s = _d_hi__B_s*_pd__18 + _pd__19*d_tau__B_s
+        _d_hi_next__delta = _d_hi__delta*_pd__18 + _pd__19*d_tau__delta
+        _d_hi_next__k_d = _d_hi__k_d*_pd__18 + _pd__19*d_tau__k_d
+        _x115 = _ddg*_g
+        _x116 = _dg**2
+        _x117 = -_x115 + 2.0*_x116
+        _x125 = (1.0/_x117)
+        _x118 = 2.0*_x125
+        _x119 = _g*_x118
+        _x120 = -_dg*_x119 + tau
+        _halley = _x120
+        _x121 = _x125**2
+        _x122 = 2.0*_dg*_x121
+        _pd__20 = -_g**2*_x122
+        _pd__21 = 8.0*_g*_x116*_x121 - _x119
+        _pd__22 = -_dg*_x118 - _x115*_x122
+        _d_halley__a = _d_ddg__a*_pd__20 + _d_dg__a*_pd__21 + _d_g__a*_pd__22 + d_tau__a
+        _d_halley__omega_D = (_d_ddg__omega_D*_pd__20 + _d_dg__omega_D*_pd__21 + _d_g__omega_D*_pd__22
+            + d_tau__omega_D)
+        _d_halley__A_c = _d_ddg__A_c*_pd__20 + _d_dg__A_c*_pd__21 + _d_g__A_c*_pd__22 + d_tau__A_c
+        _d_halley__B_s = _d_ddg__B_s*_pd__20 + _d_dg__B_s*_pd__21 + _d_g__B_s*_pd__22 + d_tau__B_s
+        _d_halley__delta = _d_ddg__delta*_pd__20 + _d_dg__delta*_pd__21 + _d_g__delta*_pd__22 + d_tau__delta
+        _d_halley__k_d = _d_ddg__k_d*_pd__20 + _d_dg__k_d*_pd__21 + _d_g__k_d*_pd__22 + d_tau__k_d
+        _x123 = (((_hi >= _x120) and (tau <= _x120)) if _x110 else ((tau >= _x120) and (_lo <= _x120)))
+        _tau_next = ((_x120) if _x123 else ((0.5)*_x111 + (0.5)*_x114))
+        _pd__23 = ((1.0) if _x123 else (0.0))
+        _x124 = ((0.0) if _x123 else (0.5))
+        _pd__24 = _x124
+        _pd__25 = _x124
+        _d_tau_next__a = _d_halley__a*_pd__23 + _d_hi_next__a*_pd__24 + _d_lo_next__a*_pd__25
+        _d_tau_next__omega_D = (_d_halley__omega_D*_pd__23 + _d_hi_next__omega_D*_pd__24
+            + _d_lo_next__omega_D*_pd__25)
+        _d_tau_next__A_c = _d_halley__A_c*_pd__23 + _d_hi_next__A_c*_pd__24 + _d_lo_next__A_c*_pd__25
+        _d_tau_next__B_s = _d_halley__B_s*_pd__23 + _d_hi_next__B_s*_pd__24 + _d_lo_next__B_s*_pd__25
+        _d_tau_next__delta = _d_halley__delta*_pd__23 + _d_hi_next__delta*_pd__24 + _d_lo_next__delta*_pd__25
+        _d_tau_next__k_d = _d_halley__k_d*_pd__23 + _d_hi_next__k_d*_pd__24 + _d_lo_next__k_d*_pd__25
+        _x126 = _tau_next - tau
+        _du = _x126*omega_D
+        _d_du__a = _d_tau_next__a*omega_D - d_tau__a*omega_D
+        _d_du__omega_D = _d_tau_next__omega_D*omega_D + _x126 - d_tau__omega_D*omega_D
+        _d_du__A_c = _d_tau_next__A_c*omega_D - d_tau__A_c*omega_D
+        _d_du__B_s = _d_tau_next__B_s*omega_D - d_tau__B_s*omega_D
+        _d_du__delta = _d_tau_next__delta*omega_D - d_tau__delta*omega_D
+        _d_du__k_d = _d_tau_next__k_d*omega_D - d_tau__k_d*omega_D
+        _dv = -_x126*delta
+        _d_dv__a = -_d_tau_next__a*delta + d_tau__a*delta
+        _d_dv__omega_D = -_d_tau_next__omega_D*delta + d_tau__omega_D*delta
+        _d_dv__A_c = -_d_tau_next__A_c*delta + d_tau__A_c*delta
+        _d_dv__B_s = -_d_tau_next__B_s*delta + d_tau__B_s*delta
+        _d_dv__delta = -_d_tau_next__delta*delta - _x126 + d_tau__delta*delta
+        _d_dv__k_d = -_d_tau_next__k_d*delta + d_tau__k_d*delta
+        # cos, sin, exp at the next iterate: Taylor steps when it is close
+        _x127 = -0.001388888888888889*_du**6 + (0.041666666666666664)*_du**4 - 0.5*_du**2 + 1.0
+        _x128 = _x127*cos_t
+        _x129 = (0.16666666666666666)*_du**3
+        _x130 = (0.008333333333333333)*_du**5
+        _x131 = (0.0001984126984126984)*_du**7 - _du + _x129 - _x130
+        _x132 = -_x131
+        _x133 = (abs(_du) <= 0.01) and (abs(_dv) <= 0.01)
+        _x134 = _tau_next*omega_D
+        _x135 = math.cos(_x134)
+        _cos_next = ((_x128 - _x132*sin_t) if _x133 else (_x135))
+        _x136 = -_du + _x129 - _x130
+        _x137 = _x127*sin_t
+        _pd__26 = ((_x136*cos_t - _x137) if _x133 else (0.0))
+        _x138 = math.sin(_x134)
+        _pd__27 = ((0.0) if _x133 else (-_x138*omega_D))
+        _x139 = ((_x127) if _x133 else (0.0))
+        _pd__28 = _x139
+        _pd__29 = ((_x131) if _x133 else (0.0))
+        _d_cos_next__a = _d_du__a*_pd__26 + _d_tau_next__a*_pd__27 + _pd__28*d_cos_t__a + _pd__29*d_sin_t__a
+        _d_cos_next__omega_D = (_d_du__omega_D*_pd__26 + _d_tau_next__omega_D*_pd__27
+            + _pd__28*d_cos_t__omega_D + _pd__29*d_sin_t__omega_D + ((0.0) if _x133 else (-_tau_next*_x138)))
+        _d_cos_next__A_c = (_d_du__A_c*_pd__26 + _d_tau_next__A_c*_pd__27 + _pd__28*d_cos_t__A_c
+            + _pd__29*d_sin_t__A_c)
+        _d_cos_next__B_s = (_d_du__B_s*_pd__26 + _d_tau_next__B_s*_pd__27 + _pd__28*d_cos_t__B_s
+            + _pd__29*d_sin_t__B_s)
+        _d_cos_next__delta = (_d_du__delta*_pd__26 + _d_tau_next__delta*_pd__27 + _pd__28*d_cos_t__delta
+            + _pd__29*d_sin_t__delta)
+        _d_cos_next__k_d = (_d_du__k_d*_pd__26 + _d_tau_next__k_d*_pd__27 + _pd__28*d_cos_t__k_d
+            + _pd__29*d_sin_t__k_d)
+        _sin_next = ((_x132*cos_t + _x137) if _x133 else (_x138))
+        _pd__30 = ((_x128 + _x136*sin_t) if _x133 else (0.0))
+        _pd__31 = ((0.0) if _x133 else (_x135*omega_D))
+        _pd__32 = ((_x132) if _x133 else (0.0))
+        _pd__33 = _x139
+        _d_sin_next__a = _d_du__a*_pd__30 + _d_tau_next__a*_pd__31 + _pd__32*d_cos_t__a + _pd__33*d_sin_t__a
+        _d_sin_next__omega_D = (_d_du__omega_D*_pd__30 + _d_tau_next__omega_D*_pd__31
+            + _pd__32*d_cos_t__omega_D + _pd__33*d_sin_t__omega_D + ((0.0) if _x133 else (_tau_next*_x135)))
+        _d_sin_next__A_c = (_d_du__A_c*_pd__30 + _d_tau_next__A_c*_pd__31 + _pd__32*d_cos_t__A_c
+            + _pd__33*d_sin_t__A_c)
+        _d_sin_next__B_s = (_d_du__B_s*_pd__30 + _d_tau_next__B_s*_pd__31 + _pd__32*d_cos_t__B_s
+            + _pd__33*d_sin_t__B_s)
+        _d_sin_next__delta = (_d_du__delta*_pd__30 + _d_tau_next__delta*_pd__31 + _pd__32*d_cos_t__delta
+            + _pd__33*d_sin_t__delta)
+        _d_sin_next__k_d = (_d_du__k_d*_pd__30 + _d_tau_next__k_d*_pd__31 + _pd__32*d_cos_t__k_d
+            + _pd__33*d_sin_t__k_d)
+        _x140 = ((0.001388888888888889)*_dv**6 + (0.008333333333333333)*_dv**5 + (0.041666666666666664)*_dv**4
+            + (0.16666666666666666)*_dv**3 + (0.5)*_dv**2 + _dv + 1.0)
+        _x141 = (0.0001984126984126984)*_dv**7 + _x140
+        _x142 = math.exp(-_tau_next*delta)
+        _exp_next = ((_x141*exp_t) if _x133 else (_x142))
+        _pd__34 = ((_x140*exp_t) if _x133 else (0.0))
+        _pd__35 = ((0.0) if _x133 else (-_x142*delta))
+        _pd__36 = ((_x141) if _x133 else (0.0))
+        _d_exp_next__a = _d_dv__a*_pd__34 + _d_tau_next__a*_pd__35 + _pd__36*d_exp_t__a
+        _d_exp_next__omega_D = (_d_dv__omega_D*_pd__34 + _d_tau_next__omega_D*_pd__35
+            + _pd__36*d_exp_t__omega_D)
+        _d_exp_next__A_c = _d_dv__A_c*_pd__34 + _d_tau_next__A_c*_pd__35 + _pd__36*d_exp_t__A_c
+        _d_exp_next__B_s = _d_dv__B_s*_pd__34 + _d_tau_next__B_s*_pd__35 + _pd__36*d_exp_t__B_s
+        _d_exp_next__delta = (_d_dv__delta*_pd__34 + _d_tau_next__delta*_pd__35 + _pd__36*d_exp_t__delta
+            + ((0.0) if _x133 else (-_tau_next*_x142)))
+        _d_exp_next__k_d = _d_dv__k_d*_pd__34 + _d_tau_next__k_d*_pd__35 + _pd__36*d_exp_t__k_d
         # next values
         tau__next = _tau_next
         _lo__next = _lo_next
         _hi__next = _hi_next
+        cos_t__next = _cos_next
+        sin_t__next = _sin_next
+        exp_t__next = _exp_next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 1e-14 > 0.0 and (abs(tau__next - tau) <= 1e-14*(_half))
-        _pkn0 = (tau__next, _lo__next, _hi__next, _d_tau_next__a, _d_tau_next__omega_D, _d_tau_next__A_c,
-            _d_tau_next__B_s, _d_tau_next__delta, _d_tau_next__k_d, _d_lo_next__a, _d_lo_next__omega_D,
-            _d_lo_next__A_c, _d_lo_next__B_s, _d_lo_next__delta, _d_lo_next__k_d, _d_hi_next__a,
-            _d_hi_next__omega_D, _d_hi_next__A_c, _d_hi_next__B_s, _d_hi_next__delta, _d_hi_next__k_d, )
+        _conv0 = 1e-06 > 0.0 and (abs(tau__next - tau) <= 1e-06*(_half))
+        _pkn0 = (tau__next, _lo__next, _hi__next, cos_t__next, sin_t__next, exp_t__next, _d_tau_next__a,
+            _d_tau_next__omega_D, _d_tau_next__A_c, _d_tau_next__B_s, _d_tau_next__delta, _d_tau_next__k_d,
+            _d_lo_next__a, _d_lo_next__omega_D, _d_lo_next__A_c, _d_lo_next__B_s, _d_lo_next__delta,
+            _d_lo_next__k_d, _d_hi_next__a, _d_hi_next__omega_D, _d_hi_next__A_c, _d_hi_next__B_s,
+            _d_hi_next__delta, _d_hi_next__k_d, _d_cos_next__a, _d_cos_next__omega_D, _d_cos_next__A_c,
+            _d_cos_next__B_s, _d_cos_next__delta, _d_cos_next__k_d, _d_sin_next__a, _d_sin_next__omega_D,
+            _d_sin_next__A_c, _d_sin_next__B_s, _d_sin_next__delta, _d_sin_next__k_d, _d_exp_next__a,
+            _d_exp_next__omega_D, _d_exp_next__A_c, _d_exp_next__B_s, _d_exp_next__delta, _d_exp_next__k_d, )
         _pk0 = _pkn0
         _passes += 1.0
     # 1 where the leg force decides liftoff, 0 where q_r = q_r_lo does
-    _x58 = exp_t*sin_t
-    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x58*omega_D
-        - A_c*cos_t*delta*exp_t - B_s*_x58*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
+    _x143 = exp_t*sin_t
+    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x143*omega_D
+        - A_c*cos_t*delta*exp_t - B_s*_x143*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
     # (internal helper: its callers check that their outputs are finite)
     store(out, (tau, cos_t, sin_t, exp_t, by_force, d_tau__a, d_tau__omega_D, d_tau__A_c, d_tau__B_s,
         d_tau__delta, d_tau__k_d, d_cos_t__a, d_cos_t__omega_D, d_cos_t__A_c, d_cos_t__B_s, d_cos_t__delta,

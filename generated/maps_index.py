@@ -263,7 +263,7 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     'at_rest_length': [], 'kernel': True, 'specialize': False, 'backends': {}, 'roles': []}, _repeated4],
     'module': 'geyer_damped', 'summary':
     'Assumption 1 (angular momentum conserved), 1/(1+rho)^3 by its Taylor polynomial: a damped linear '
-    'oscillator per half (k_c, then k_d); liftoff a safeguarded Newton root; optionally a gravity '
+    'oscillator per half (k_c, then k_d); liftoff a safeguarded Halley root; optionally a gravity '
     'correction per half', 'roles': [], 'specialized': [], 'choices': {}, 'extras': _repeated6, 'requires': [
     ], 'as_printed': False, 'approximation_statuses': [], 'kernels': {'stance': {'module': 'geyer_damped',
     'name': 'geyer_damped_stance', 'x': ['q_r_td', 'q_rd_td', 'q_th_td', 'q_thd_td'], 'p': ['m', 'l0', 'k_c',

@@ -15,9 +15,10 @@ damper takes. The bottom is in closed form (:func:`bottom_trig`); the leg angle 
 integral of omega (1 - 2 rho) over the damped rho (:func:`angle_increment`), the rate the exact (17)
 with the conserved momentum, as in Geyer's map. Liftoff (option ``liftoff``, the exact map's):
 ``force`` where the leg force k_d (l0 - q_r) - c q_rd falls to 0, or at q_r = q_r_lo if that comes
-first; ``length`` at q_r = q_r_lo. Both are roots of a transcendental equation, found by Newton's
+first; ``length`` at q_r = q_r_lo. Both are roots of a transcendental equation, found by Halley's
 method safeguarded by bisection on [0, pi / omega_D] after the bottom, where rho increases
-(:func:`liftoff_function`).
+(:func:`liftoff_function`), from the closed-form root with the decay frozen at a quarter period
+(:func:`frozen_decay_root`, the root itself at c = 0).
 
 At c = 0 the map is Geyer's radial solution (11) split at its bottom, which agrees with ``geyer``
 (k_c = k_d) to rounding (not bit for bit: ``geyer`` evaluates (11)-(14) in its own closed forms).
@@ -162,10 +163,18 @@ def _half(prefix: str, stiffness: sp.Basic, rate: sp.Basic, rho0: sp.Basic, rhod
 
 
 @cache
-def liftoff_function() -> tuple[sp.Basic, sp.Basic, sp.Basic]:
-    """g(t), g'(t) after the bottom, whose first zero is liftoff, and the condition that the force
-    decides it (rho increases on [0, pi / omega_D] there: rho' = -A (omega_n^2 / omega_D)
-    exp(-delta t) sin(omega_D t), A < 0).
+def _jerk() -> sp.Basic:
+    """The third time derivative of rho of the damped solution at a time t of its half, in the
+    placeholders (for Halley's step)."""
+    rho_t, _ = damped_radial_solution()
+    return _trig(rho_t.diff(t, 3))
+
+
+@cache
+def liftoff_function() -> tuple[sp.Basic, sp.Basic, sp.Basic, sp.Basic]:
+    """g(t) after the bottom, whose first zero is liftoff, its first and second time derivatives, and
+    the condition that the force decides it (rho increases on [0, pi / omega_D] there: rho' = -A
+    (omega_n^2 / omega_D) exp(-delta t) sin(omega_D t), A < 0).
 
     ``length``: g = rho - rho_lo. ``force``: the leg force k_d (l0 - q_r) - c q_rd over k_d l0 is
     -(rho + 2 delta rho' / omega0^2); liftoff is the first of its zero and rho = rho_lo, so
@@ -179,7 +188,76 @@ def liftoff_function() -> tuple[sp.Basic, sp.Basic, sp.Basic]:
     by_force = (pull >= -rho_lo) & LIFTOFF.is_("force")
     g = rho_ + sp.Piecewise((pull, by_force), (-rho_lo, True))
     dg = rate + sp.Piecewise((2 * DELTA * acc / w0sq, by_force), (0, True))
-    return g, dg, by_force
+    ddg = acc + sp.Piecewise((2 * DELTA * _jerk() / w0sq, by_force), (0, True))
+    return g, dg, ddg, by_force
+
+
+@cache
+def liftoff_forms() -> dict[str, tuple[sp.Basic, sp.Basic, sp.Basic]]:
+    """Each liftoff condition as c0 + exp(-delta t) (P cos(omega_D t) + Q sin(omega_D t)) = 0: its
+    (c0, P, Q); ``length`` rho = rho_lo, ``force`` rho + 2 delta rho' / omega0^2 = 0."""
+    rho_, rate, _ = radial_state()
+    forms = {"length": rho_ - (q_r_lo / l0 - 1), "force": rho_ + 2 * DELTA * rate / (_K_D / m)}
+    out = {}
+    for name, g in forms.items():
+        c0 = g.subs(_EXP, 0)
+        scaled = sp.expand((g - c0) / _EXP)
+        p_, q_ = scaled.coeff(_COS), scaled.coeff(_SIN)
+        assert sp.simplify(scaled - p_ * _COS - q_ * _SIN) == 0
+        out[name] = (c0, p_, q_)
+    return out
+
+
+def frozen_decay_root(form: tuple, growth: sp.Basic, w_d: sp.Basic) -> sp.Basic:
+    """Near the root t of c0 + exp(-delta t) (P cos(omega_D t) + Q sin(omega_D t)) = 0: the root
+    with the decay frozen at a time t_f (``growth`` = exp(delta t_f)), P cos x + Q sin x = -H
+    cos(x + phi) (H = sqrt(P^2 + Q^2), tan phi = Q / -P, P < 0 after the bottom), so omega_D t =
+    acos(c0 exp(delta t_f) / H) - phi (the argument clamped to [-1, 1]), with phi by its first order
+    Q / -P (|phi| is of the order delta / omega_D). The root itself at delta = 0, where Q = 0."""
+    c0, p_, q_ = form
+    z = c0 * growth / sp.sqrt(p_**2 + q_**2)
+    z = sp.Piecewise((-1, z < -1), (1, z > 1), (z, True))
+    return (sp.acos(z) + q_ / p_) / w_d
+
+
+#: Halley's iteration stops once a step moves the time by at most this share of half a damped
+#: period: the iterate that step took is then the root to rounding (cubic convergence; measured at
+#: most 1.5e-16 of half a period from the root at 10-20 % of the critical damping).
+LIFTOFF_STEP_TOL = sp.Float(1e-6)
+
+#: A step of the liftoff iteration of at most this much in omega_D t (and in delta t) moves cos,
+#: sin and exp by their Taylor polynomials (degrees 6, 7, 7: truncation below 3e-21).
+_SMALL_STEP = sp.Float(1e-2)
+
+
+def _advance(w_d, delta, tau, tau_next, at: tuple) -> tuple[Step, ...]:
+    """``_cos_next``, ``_sin_next``, ``_exp_next`` at ``tau_next`` from their values ``at`` ``tau``:
+    a small step (at most :data:`_SMALL_STEP` in omega_D t and delta t) rotates and scales them by
+    the Taylor polynomials of cos, sin and exp, a larger one evaluates them. Near the root every
+    step is small, so the iterate the loop stops at costs no transcendental function."""
+    cos_t, sin_t, exp_t = at
+    u, v = sym("_du"), sym("_dv")
+    cu = 1 - u**2 / 2 + u**4 / 24 - u**6 / 720
+    su = u - u**3 / 6 + u**5 / 120 - u**7 / 5040
+    ev = sum(v**i / sp.factorial(i) for i in range(8))
+    small = (sp.Abs(u) <= _SMALL_STEP) & (sp.Abs(v) <= _SMALL_STEP)
+    return (
+        Stage(((u, w_d * (tau_next - tau)), (v, -delta * (tau_next - tau)))),
+        Stage(
+            (
+                (
+                    sym("_cos_next"),
+                    sp.Piecewise((cos_t * cu - sin_t * su, small), (sp.cos(w_d * tau_next), True)),
+                ),
+                (
+                    sym("_sin_next"),
+                    sp.Piecewise((sin_t * cu + cos_t * su, small), (sp.sin(w_d * tau_next), True)),
+                ),
+                (sym("_exp_next"), sp.Piecewise((exp_t * ev, small), (sp.exp(-delta * tau_next), True))),
+            ),
+            comment="cos, sin, exp at the next iterate: Taylor steps when it is close",
+        ),
+    )
 
 
 #: The outputs of :func:`liftoff_kernel`.
@@ -189,8 +267,10 @@ _LIFTOFF_OUT = ("tau", "cos_t", "sin_t", "exp_t", "by_force")
 @cache
 def liftoff_kernel() -> Kernel:
     """Liftoff after the bottom: the first zero of :func:`liftoff_function`'s g on (0, pi / omega_D),
-    by Newton's method safeguarded by bisection on its bracket."""
-    g, dg, by_force = liftoff_function()
+    by Halley's method safeguarded by bisection on its bracket, from the root of one condition with
+    the decay frozen at a quarter of the damped period (:func:`frozen_decay_root`; the root at
+    c = 0)."""
+    g, dg, ddg, by_force = liftoff_function()
     args = tuple(
         Arg(sym(x.name), doc)
         for x, doc in (
@@ -216,23 +296,31 @@ def liftoff_kernel() -> Kernel:
     tau, lo, hi, half = sym("tau"), sym("_lo"), sym("_hi"), sym("_half")
     cos_t, sin_t, exp_t = sym("cos_t"), sym("sin_t"), sym("exp_t")
     at_t = {_COS: cos_t, _SIN: sin_t, _EXP: exp_t}
-    g_v, g_d, newton = sym("_g"), sym("_dg"), sym("_newton")
+    g_v, g_d, g_dd, step = sym("_g"), sym("_dg"), sym("_ddg"), sym("_halley")
     lo_next, hi_next = sym("_lo_next"), sym("_hi_next")
-    rho_lo = q_r_lo / l0 - 1
-    guess = (rho_lo - plain[a]) / (plain[A_C] * sp.exp(-_DELTA * half / 2))
-    guess = sp.Piecewise((-1, guess < -1), (1, guess > 1), (guess, True))
+    # one condition's form: the force's where it decides liftoff once c > 0 (always if q_r_lo = l0:
+    # at rho = 0 the leg already pulls), the length's at c = 0 (there the first zero is rho = rho_lo)
+    forms = {name: tuple(bind(x, {}) for x in form) for name, form in liftoff_forms().items()}
+    by_force_form = LIFTOFF.is_("force") & (_DELTA > 0)
+    names = (sym("_form_c"), sym("_form_p"), sym("_form_q"))
+    chosen = tuple(
+        (n, sp.Piecewise((f, by_force_form), (ln, True)))
+        for n, f, ln in zip(names, forms["force"], forms["length"], strict=True)
+    )
+
     # g at the bottom (rho' = 0) and half a damped period later (rho' = 0 again)
     g_start = bind(g, {_COS: 1, _SIN: 0, _EXP: 1})
-    g_end = bind(g, {_COS: -1, _SIN: 0, _EXP: sp.exp(-_DELTA * half)})
+    decay = sym("_decay_quarter")  # exp(-delta t) a quarter damped period after the bottom
+    g_end = bind(g, {_COS: -1, _SIN: 0, _EXP: decay**2})
     return Kernel(
         name="damped_liftoff",
         summary="Liftoff of the damped decompression half: the first zero of the leg force (or of "
-        "q_r - q_r_lo) after the bottom, safeguarded Newton.",
+        "q_r - q_r_lo) after the bottom, safeguarded Halley.",
         equations=(),
         args=args,
         steps=(
             Stage(
-                ((half, sp.pi / w_d),),
+                ((half, sp.pi / w_d), (decay, sp.exp(-_DELTA * half / 2))),
                 (
                     Guard(plain[A_C] < 0, "RECOMPRESSION", "the k_d spring extends the leg at the bottom"),
                     Guard(g_start < 0, "NO_LIFTOFF", "the bottom lies below the liftoff"),
@@ -240,44 +328,61 @@ def liftoff_kernel() -> Kernel:
                 ),
                 comment="liftoff lies in (0, pi / omega_D) after the bottom, where rho increases",
             ),
+            Stage(chosen, comment="the form of the condition that decides liftoff (c > 0: the force's)"),
+            Stage(
+                ((sym("_first"), frozen_decay_root(names, 1 / decay, w_d)),),
+                comment="the root with the decay frozen at a quarter period (the root itself at c = 0)",
+            ),
+            Stage(
+                (
+                    (sym("_tau0"), sp.Min(sp.Max(sym("_first"), 0), half)),
+                    (sym("_cos0"), sp.cos(w_d * sym("_tau0"))),
+                    (sym("_sin0"), sp.sin(w_d * sym("_tau0"))),
+                    (sym("_exp0"), sp.exp(-_DELTA * sym("_tau0"))),
+                ),
+                comment="the first iterate, inside the bracket",
+            ),
             Iterate(
-                state=((tau, sp.acos(guess) / w_d),),
-                # the bracket moves every pass but stays out of the convergence test: at c = 0 the
-                # guess is the root and one pass confirms it
-                carry=((lo, sp.S.Zero, lo_next), (hi, half, hi_next)),
-                evaluate=(
-                    Stage(
-                        (
-                            (cos_t, sp.cos(w_d * tau)),
-                            (sin_t, sp.sin(w_d * tau)),
-                            (exp_t, sp.exp(-_DELTA * tau)),
-                            (g_v, bind(g, at_t)),
-                            (g_d, bind(dg, at_t)),
-                        )
-                    ),
+                state=((tau, sym("_tau0")),),
+                # the bracket and cos, sin, exp at the iterate move every pass, outside the test
+                carry=(
+                    (lo, sp.S.Zero, lo_next),
+                    (hi, half, hi_next),
+                    (cos_t, sym("_cos0"), sym("_cos_next")),
+                    (sin_t, sym("_sin0"), sym("_sin_next")),
+                    (exp_t, sym("_exp0"), sym("_exp_next")),
                 ),
                 body=(
                     Stage(
                         (
+                            (g_v, bind(g, at_t)),
+                            (g_d, bind(dg, at_t)),
+                            (g_dd, bind(ddg, at_t)),
+                        ),
+                        comment="g and its derivatives at the iterate",
+                    ),
+                    Stage(
+                        (
                             (lo_next, sp.Piecewise((tau, g_v < 0), (lo, True))),
                             (hi_next, sp.Piecewise((hi, g_v < 0), (tau, True))),
-                            (newton, tau - g_v / g_d),
+                            (step, tau - 2 * g_v * g_d / (2 * g_d**2 - g_v * g_dd)),
                             (
                                 sym("_tau_next"),
                                 sp.Piecewise(
-                                    (newton, (newton >= lo_next) & (newton <= hi_next)),
+                                    (step, (step >= lo_next) & (step <= hi_next)),
                                     ((lo_next + hi_next) / 2, True),
                                 ),
                             ),
                         )
                     ),
+                    *_advance(w_d, _DELTA, tau, sym("_tau_next"), (cos_t, sin_t, exp_t)),
                 ),
                 update=(sym("_tau_next"),),
                 max_iter=sp.Integer(60),
-                tol=sp.Float(1e-14),
+                tol=LIFTOFF_STEP_TOL,
                 scales=(half,),
                 count=sym("_passes"),
-                comment="Newton's method on g, safeguarded by bisection on its bracket",
+                comment="Halley's method on g, safeguarded by bisection on its bracket",
             ),
             Stage(
                 ((sym("by_force"), sp.Piecewise((1, bind(by_force, at_t)), (0, True))),),
@@ -499,13 +604,13 @@ MAPS = (
         options=(LIFTOFF, GRAVITY, iterations_option(100, ()), tol_option(1e-12)),
         extras=HALF_EXTRAS,
         summary="Assumption 1 (angular momentum conserved), 1/(1+rho)^3 by its Taylor polynomial: a "
-        "damped linear oscillator per half (k_c, then k_d); liftoff a safeguarded Newton root; "
+        "damped linear oscillator per half (k_c, then k_d); liftoff a safeguarded Halley root; "
         "optionally a gravity correction per half",
         notes="Not in the report: (4) with the damper -c q_rd, linearised to rho'' + 2 delta rho' + "
         "omega_n^2 rho = omega^2 - g_s / l0 (delta = c / (2 m), omega_n^2 = k / m + 3 omega^2), solved "
         "from the touchdown state with k_c and from the bottom with k_d; the bottom in closed form; the "
         "leg angle (18)-(19) integrated over the damped rho; liftoff where the leg force or q_r - q_r_lo "
-        "reaches 0 (option liftoff), by Newton's method safeguarded by bisection; option gravity adds "
+        "reaches 0 (option liftoff), by Halley's method safeguarded by bisection; option gravity adds "
         "a virtual gravity effect of section 4 (types 0-4) on each half.",
     ),
 )
