@@ -55,7 +55,7 @@ def damped_liftoff(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff):
         by_force: 1: the leg force's zero, 0: q_r = q_r_lo
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 234
+    # Total ops: 238
     # liftoff lies in (0, pi / omega_D) after the bottom, where rho increases
     _x0 = math.pi/omega_D
     _half = _x0
@@ -73,8 +73,8 @@ def damped_liftoff(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff):
             >= -2.0*delta*m*(A_c*_decay_quarter**2*delta - B_s*_decay_quarter**2*omega_D)/k_d + 1.0) else (1.0
             - q_r_lo/l0)) > 0.0)):
         return _NAN5 + (STATUS_NO_LIFTOFF,)
-    # the form of the condition that decides liftoff (c > 0: the force's)
-    _x1 = (liftoff == 0.0) and (delta > 0.0)
+    # the form of the condition the first iterate solves
+    _x1 = (liftoff == 0.0) and (l0 <= q_r_lo) and (delta > 0.0)
     _x2 = 2.0*m/k_d
     _x3 = _x2*delta*omega_D
     _x4 = _x2*delta**2
@@ -95,13 +95,13 @@ def damped_liftoff(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff):
     # Halley's method on g, safeguarded by bisection on its bracket
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = (_tau0, 0.0, _half, _cos0, _sin0, _exp0, )
+    _pki0 = (_tau0, 0.0, 0.0, _half, _cos0, _sin0, _exp0, )
     _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
     _last0 = max(int(60.0), 0)
     for _it0 in range(_last0 + 1):
-        (tau, _lo, _hi, cos_t, sin_t, exp_t, ) = _pk0
+        (tau, _bisections, _lo, _hi, cos_t, sin_t, exp_t, ) = _pk0
         if _it0 == _last0 and not _conv0 and 1e-06 > 0.0 and _passes > 0.0:
             return _NAN5 + (STATUS_NOT_CONVERGED,)
         if _conv0 or _it0 == _last0:
@@ -129,39 +129,43 @@ def damped_liftoff(a, omega_D, A_c, B_s, delta, m, l0, k_d, q_r_lo, liftoff):
         _ddg = (_x22 + ((_x15*(3.0*A_c*_x21*cos_t*delta*exp_t + A_c*_x24*exp_t*sin_t
             + 3.0*B_s*_x19*cos_t*exp_t*omega_D + 3.0*B_s*_x21*delta*exp_t*sin_t - _x11*_x23 - 3.0*_x12*_x19
             - _x20*_x24 - _x23*_x9)) if _x18 else (0.0)))
+        # the bracket and Halley's step
         _x25 = (_g < 0.0)
-        _x26 = ((tau) if _x25 else (_lo))
-        _x27 = ((_hi) if _x25 else (tau))
-        _x28 = -2.0*_dg*_g/(-_ddg*_g + 2.0*_dg**2) + tau
-        _lo_next = _x26
-        _hi_next = _x27
-        _halley = _x28
-        _tau_next = ((_x28) if (((_hi >= _x28) and (_x28 >= tau)) if _x25 else ((_lo <= _x28) and (_x28
-            <= tau))) else ((0.5)*_x26 + (0.5)*_x27))
-        _x29 = _tau_next - tau
-        _du = _x29*omega_D
-        _dv = -_x29*delta
+        _lo_next = ((tau) if _x25 else (_lo))
+        _hi_next = ((_hi) if _x25 else (tau))
+        _halley = -2.0*_dg*_g/(-_ddg*_g + 2.0*_dg**2) + tau
+        # Halley's step where it is safe, else bisection (counted: the loop stops on Halley steps only)
+        _x26 = (_halley >= _lo_next) and (_halley <= _hi_next) and (_dg > 0.0)
+        _x27 = ((0.0) if _x26 else (1.0))
+        _bisect = _x27
+        _tau_next = ((_halley) if _x26 else ((0.5)*_hi_next + (0.5)*_lo_next))
+        _bisections_next = _bisections + _x27
+        # the step in omega_D t and in -delta t
+        _x28 = _tau_next - tau
+        _du = _x28*omega_D
+        _dv = -_x28*delta
         # cos, sin, exp at the next iterate: Taylor steps when it is close
-        _x30 = -0.001388888888888889*_du**6 + (0.041666666666666664)*_du**4 - 0.5*_du**2 + 1.0
-        _x31 = (-0.0001984126984126984*_du**7 + (0.008333333333333333)*_du**5 - 0.16666666666666666*_du**3
+        _x29 = -0.001388888888888889*_du**6 + (0.041666666666666664)*_du**4 - 0.5*_du**2 + 1.0
+        _x30 = (-0.0001984126984126984*_du**7 + (0.008333333333333333)*_du**5 - 0.16666666666666666*_du**3
             + _du)
-        _x32 = (abs(_du) <= 0.01) and (abs(_dv) <= 0.01)
-        _x33 = _tau_next*omega_D
-        _cos_next = ((_x30*cos_t - _x31*sin_t) if _x32 else (math.cos(_x33)))
-        _sin_next = ((_x30*sin_t + _x31*cos_t) if _x32 else (math.sin(_x33)))
+        _x31 = (abs(_du) <= 0.01) and (abs(_dv) <= 0.01)
+        _x32 = _tau_next*omega_D
+        _cos_next = ((_x29*cos_t - _x30*sin_t) if _x31 else (math.cos(_x32)))
+        _sin_next = ((_x29*sin_t + _x30*cos_t) if _x31 else (math.sin(_x32)))
         _exp_next = ((exp_t*((0.0001984126984126984)*_dv**7 + (0.001388888888888889)*_dv**6
             + (0.008333333333333333)*_dv**5 + (0.041666666666666664)*_dv**4 + (0.16666666666666666)*_dv**3
-            + (0.5)*_dv**2 + _dv + 1.0)) if _x32 else (math.exp(-_tau_next*delta)))
+            + (0.5)*_dv**2 + _dv + 1.0)) if _x31 else (math.exp(-_tau_next*delta)))
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 1e-06 > 0.0 and (abs(_tau_next - tau) <= 1e-06*(_half))
-        _pkn0 = (_tau_next, _lo_next, _hi_next, _cos_next, _sin_next, _exp_next, )
+        _conv0 = (1e-06 > 0.0 and (abs(_tau_next - tau) <= 1e-06*(_half)) and (abs(_bisections_next
+            - _bisections) <= 1e-06*(1.0)))
+        _pkn0 = (_tau_next, _bisections_next, _lo_next, _hi_next, _cos_next, _sin_next, _exp_next, )
         _pk0 = _pkn0
         _passes += 1.0
     # 1 where the leg force decides liftoff, 0 where q_r = q_r_lo does
-    _x34 = exp_t*sin_t
-    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x34*omega_D
-        - A_c*cos_t*delta*exp_t - B_s*_x34*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
+    _x33 = exp_t*sin_t
+    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x33*omega_D
+        - A_c*cos_t*delta*exp_t - B_s*_x33*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
     # (internal helper: its callers check that their outputs are finite)
     return (tau, cos_t, sin_t, exp_t, by_force, STATUS_OK)
 
@@ -171,7 +175,7 @@ def geyer_damped_stance(x, p, out):
     """Geyer et al.'s map with leg damping (damped radial oscillator per half): touchdown state -> bottom and
     liftoff states.
 
-    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 65, 76.
 
     Not in the report: (4) with the damper -c q_rd, linearised to rho'' + 2 delta rho' +
     omega_n^2 rho = omega^2 - g_s / l0 (delta = c / (2 m), omega_n^2 = k / m + 3 omega^2),
@@ -357,7 +361,7 @@ def geyer_damped_stance(x, p, out):
             i_P_new1 = 0.0
             i_P_new2 = 0.0
         elif gravity == 1.0:
-            # eq (48) on each half at the rest length l0, as (49)
+            # eq (48) on each half at l0, as (49)
             _x36 = g_s*l0*m
             _x37 = _x36*math.sin(i_bottom_q_th)
             i_P_new1 = (0.5)*i_t_bottom*(_x36*math.sin(q_th_td) + _x37)
@@ -457,7 +461,7 @@ def geyer_damped_state_at(x, p, out):
     """Geyer et al.'s map with leg damping (damped radial oscillator per half): the polar state a time t after
     touchdown.
 
-    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 65, 76.
 
     Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, liftoff, gravity, iterations, tol); writes the outputs
@@ -628,7 +632,7 @@ def geyer_damped_state_at(x, p, out):
             i_P_new1 = 0.0
             i_P_new2 = 0.0
         elif gravity == 1.0:
-            # eq (48) on each half at the rest length l0, as (49)
+            # eq (48) on each half at l0, as (49)
             _x36 = g_s*l0*m
             _x37 = _x36*math.sin(i_bottom_q_th)
             i_P_new1 = (0.5)*i_t_bottom*(_x36*math.sin(q_th_td) + _x37)
@@ -762,7 +766,7 @@ def geyer_damped_apex_return(x, p, out):
     """Apex-return map: exact flights, stance by Geyer et al.'s map with leg damping (damped radial oscillator
     per half).
 
-    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 65, 76.
 
     Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground, retraction_rate) and the parameter record
     p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, c, liftoff, gravity, iterations, tol); writes the outputs

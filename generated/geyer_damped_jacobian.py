@@ -72,8 +72,8 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
             >= -2.0*delta*m*(A_c*_decay_quarter**2*delta - B_s*_decay_quarter**2*omega_D)/k_d + 1.0) else (1.0
             - q_r_lo/l0)) > 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)
-    # the form of the condition that decides liftoff (c > 0: the force's)
-    _x4 = (liftoff == 0.0) and (delta > 0.0)
+    # the form of the condition the first iterate solves
+    _x4 = (liftoff == 0.0) and (l0 <= q_r_lo) and (delta > 0.0)
     _form_c = ((a) if _x4 else (a + 1.0 - q_r_lo/l0))
     _x5 = (1.0/k_d)
     _x6 = _x5*m
@@ -175,22 +175,25 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
     # Halley's method on g, safeguarded by bisection on its bracket
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = (_tau0, 0.0, _half, _cos0, _sin0, _exp0, _d_tau0__a, _d_tau0__omega_D, _d_tau0__A_c, _d_tau0__B_s,
-        _d_tau0__delta, _d_tau0__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _d_half__omega_D, 0.0, 0.0, 0.0, 0.0,
-        _d_cos0__a, _d_cos0__omega_D, _d_cos0__A_c, _d_cos0__B_s, _d_cos0__delta, _d_cos0__k_d, _d_sin0__a,
-        _d_sin0__omega_D, _d_sin0__A_c, _d_sin0__B_s, _d_sin0__delta, _d_sin0__k_d, _d_exp0__a,
-        _d_exp0__omega_D, _d_exp0__A_c, _d_exp0__B_s, _d_exp0__delta, _d_exp0__k_d, )
+    _pki0 = (_tau0, 0.0, 0.0, _half, _cos0, _sin0, _exp0, _d_tau0__a, _d_tau0__omega_D, _d_tau0__A_c,
+        _d_tau0__B_s, _d_tau0__delta, _d_tau0__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, _d_half__omega_D, 0.0, 0.0, 0.0, 0.0, _d_cos0__a, _d_cos0__omega_D, _d_cos0__A_c,
+        _d_cos0__B_s, _d_cos0__delta, _d_cos0__k_d, _d_sin0__a, _d_sin0__omega_D, _d_sin0__A_c, _d_sin0__B_s,
+        _d_sin0__delta, _d_sin0__k_d, _d_exp0__a, _d_exp0__omega_D, _d_exp0__A_c, _d_exp0__B_s,
+        _d_exp0__delta, _d_exp0__k_d, )
     _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
     _last0 = max(int(60.0), 0)
     for _it0 in range(_last0 + 1):
-        (tau, _lo, _hi, cos_t, sin_t, exp_t, d_tau__a, d_tau__omega_D, d_tau__A_c, d_tau__B_s, d_tau__delta,
-            d_tau__k_d, _d_lo__a, _d_lo__omega_D, _d_lo__A_c, _d_lo__B_s, _d_lo__delta, _d_lo__k_d, _d_hi__a,
-            _d_hi__omega_D, _d_hi__A_c, _d_hi__B_s, _d_hi__delta, _d_hi__k_d, d_cos_t__a, d_cos_t__omega_D,
-            d_cos_t__A_c, d_cos_t__B_s, d_cos_t__delta, d_cos_t__k_d, d_sin_t__a, d_sin_t__omega_D,
-            d_sin_t__A_c, d_sin_t__B_s, d_sin_t__delta, d_sin_t__k_d, d_exp_t__a, d_exp_t__omega_D,
-            d_exp_t__A_c, d_exp_t__B_s, d_exp_t__delta, d_exp_t__k_d, ) = _pk0
+        (tau, _bisections, _lo, _hi, cos_t, sin_t, exp_t, d_tau__a, d_tau__omega_D, d_tau__A_c, d_tau__B_s,
+            d_tau__delta, d_tau__k_d, _d_bisections__a, _d_bisections__omega_D, _d_bisections__A_c,
+            _d_bisections__B_s, _d_bisections__delta, _d_bisections__k_d, _d_lo__a, _d_lo__omega_D,
+            _d_lo__A_c, _d_lo__B_s, _d_lo__delta, _d_lo__k_d, _d_hi__a, _d_hi__omega_D, _d_hi__A_c,
+            _d_hi__B_s, _d_hi__delta, _d_hi__k_d, d_cos_t__a, d_cos_t__omega_D, d_cos_t__A_c, d_cos_t__B_s,
+            d_cos_t__delta, d_cos_t__k_d, d_sin_t__a, d_sin_t__omega_D, d_sin_t__A_c, d_sin_t__B_s,
+            d_sin_t__delta, d_sin_t__k_d, d_exp_t__a, d_exp_t__omega_D, d_exp_t__A_c, d_exp_t__B_s,
+            d_exp_t__delta, d_exp_t__k_d, ) = _pk0
         if _it0 == _last0 and not _conv0 and 1e-06 > 0.0 and _passes > 0.0:
             return fail(out, STATUS_NOT_CONVERGED)
         if _conv0 or _it0 == _last0:
@@ -316,42 +319,40 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
             + 6.0*B_s*cos_t*delta*exp_t*omega_D - _x106*_x107 - 3.0*_x78 - 3.0*_x79)) if _x58 else (0.0)))
         _d_ddg__k_d = (_pd__13*d_cos_t__k_d + _pd__14*d_exp_t__k_d + _pd__15*d_sin_t__k_d + ((-_x104*_x76)
             if _x58 else (0.0)))
+        # the bracket and Halley's step
         _x110 = (_g < 0.0)
-        _x111 = ((tau) if _x110 else (_lo))
-        _lo_next = _x111
-        _x112 = ((0.0) if _x110 else (1.0))
-        _pd__16 = _x112
-        _x113 = ((1.0) if _x110 else (0.0))
-        _pd__17 = _x113
+        _lo_next = ((tau) if _x110 else (_lo))
+        _x111 = ((0.0) if _x110 else (1.0))
+        _pd__16 = _x111
+        _x112 = ((1.0) if _x110 else (0.0))
+        _pd__17 = _x112
         _d_lo_next__a = _d_lo__a*_pd__16 + _pd__17*d_tau__a
         _d_lo_next__omega_D = _d_lo__omega_D*_pd__16 + _pd__17*d_tau__omega_D
         _d_lo_next__A_c = _d_lo__A_c*_pd__16 + _pd__17*d_tau__A_c
         _d_lo_next__B_s = _d_lo__B_s*_pd__16 + _pd__17*d_tau__B_s
         _d_lo_next__delta = _d_lo__delta*_pd__16 + _pd__17*d_tau__delta
         _d_lo_next__k_d = _d_lo__k_d*_pd__16 + _pd__17*d_tau__k_d
-        _x114 = ((_hi) if _x110 else (tau))
-        _hi_next = _x114
-        _pd__18 = _x113
-        _pd__19 = _x112
+        _hi_next = ((_hi) if _x110 else (tau))
+        _pd__18 = _x112
+        _pd__19 = _x111
         _d_hi_next__a = _d_hi__a*_pd__18 + _pd__19*d_tau__a
         _d_hi_next__omega_D = _d_hi__omega_D*_pd__18 + _pd__19*d_tau__omega_D
         _d_hi_next__A_c = _d_hi__A_c*_pd__18 + _pd__19*d_tau__A_c
         _d_hi_next__B_s = _d_hi__B_s*_pd__18 + _pd__19*d_tau__B_s
         _d_hi_next__delta = _d_hi__delta*_pd__18 + _pd__19*d_tau__delta
         _d_hi_next__k_d = _d_hi__k_d*_pd__18 + _pd__19*d_tau__k_d
-        _x115 = _ddg*_g
-        _x116 = _dg**2
-        _x117 = -_x115 + 2.0*_x116
-        _x125 = (1.0/_x117)
-        _x118 = 2.0*_x125
-        _x119 = _g*_x118
-        _x120 = -_dg*_x119 + tau
-        _halley = _x120
-        _x121 = _x125**2
-        _x122 = 2.0*_dg*_x121
-        _pd__20 = -_g**2*_x122
-        _pd__21 = 8.0*_g*_x116*_x121 - _x119
-        _pd__22 = -_dg*_x118 - _x115*_x122
+        _x113 = _ddg*_g
+        _x114 = _dg**2
+        _x115 = -_x113 + 2.0*_x114
+        _x120 = (1.0/_x115)
+        _x116 = 2.0*_x120
+        _x117 = _g*_x116
+        _halley = -_dg*_x117 + tau
+        _x118 = _x120**2
+        _x119 = 2.0*_dg*_x118
+        _pd__20 = -_g**2*_x119
+        _pd__21 = 8.0*_g*_x114*_x118 - _x117
+        _pd__22 = -_dg*_x116 - _x113*_x119
         _d_halley__a = _d_ddg__a*_pd__20 + _d_dg__a*_pd__21 + _d_g__a*_pd__22 + d_tau__a
         _d_halley__omega_D = (_d_ddg__omega_D*_pd__20 + _d_dg__omega_D*_pd__21 + _d_g__omega_D*_pd__22
             + d_tau__omega_D)
@@ -359,12 +360,15 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
         _d_halley__B_s = _d_ddg__B_s*_pd__20 + _d_dg__B_s*_pd__21 + _d_g__B_s*_pd__22 + d_tau__B_s
         _d_halley__delta = _d_ddg__delta*_pd__20 + _d_dg__delta*_pd__21 + _d_g__delta*_pd__22 + d_tau__delta
         _d_halley__k_d = _d_ddg__k_d*_pd__20 + _d_dg__k_d*_pd__21 + _d_g__k_d*_pd__22 + d_tau__k_d
-        _x123 = (((_hi >= _x120) and (tau <= _x120)) if _x110 else ((tau >= _x120) and (_lo <= _x120)))
-        _tau_next = ((_x120) if _x123 else ((0.5)*_x111 + (0.5)*_x114))
-        _pd__23 = ((1.0) if _x123 else (0.0))
-        _x124 = ((0.0) if _x123 else (0.5))
-        _pd__24 = _x124
-        _pd__25 = _x124
+        # Halley's step where it is safe, else bisection (counted: the loop stops on Halley steps only)
+        _x121 = (_halley >= _lo_next) and (_halley <= _hi_next) and (_dg > 0.0)
+        _x122 = ((0.0) if _x121 else (1.0))
+        _bisect = _x122
+        _tau_next = ((_halley) if _x121 else ((0.5)*_hi_next + (0.5)*_lo_next))
+        _pd__23 = ((1.0) if _x121 else (0.0))
+        _x123 = ((0.0) if _x121 else (0.5))
+        _pd__24 = _x123
+        _pd__25 = _x123
         _d_tau_next__a = _d_halley__a*_pd__23 + _d_hi_next__a*_pd__24 + _d_lo_next__a*_pd__25
         _d_tau_next__omega_D = (_d_halley__omega_D*_pd__23 + _d_hi_next__omega_D*_pd__24
             + _d_lo_next__omega_D*_pd__25)
@@ -372,43 +376,45 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
         _d_tau_next__B_s = _d_halley__B_s*_pd__23 + _d_hi_next__B_s*_pd__24 + _d_lo_next__B_s*_pd__25
         _d_tau_next__delta = _d_halley__delta*_pd__23 + _d_hi_next__delta*_pd__24 + _d_lo_next__delta*_pd__25
         _d_tau_next__k_d = _d_halley__k_d*_pd__23 + _d_hi_next__k_d*_pd__24 + _d_lo_next__k_d*_pd__25
-        _x126 = _tau_next - tau
-        _du = _x126*omega_D
+        _bisections_next = _bisections + _x122
+        # the step in omega_D t and in -delta t
+        _x124 = _tau_next - tau
+        _du = _x124*omega_D
         _d_du__a = _d_tau_next__a*omega_D - d_tau__a*omega_D
-        _d_du__omega_D = _d_tau_next__omega_D*omega_D + _x126 - d_tau__omega_D*omega_D
+        _d_du__omega_D = _d_tau_next__omega_D*omega_D + _x124 - d_tau__omega_D*omega_D
         _d_du__A_c = _d_tau_next__A_c*omega_D - d_tau__A_c*omega_D
         _d_du__B_s = _d_tau_next__B_s*omega_D - d_tau__B_s*omega_D
         _d_du__delta = _d_tau_next__delta*omega_D - d_tau__delta*omega_D
         _d_du__k_d = _d_tau_next__k_d*omega_D - d_tau__k_d*omega_D
-        _dv = -_x126*delta
+        _dv = -_x124*delta
         _d_dv__a = -_d_tau_next__a*delta + d_tau__a*delta
         _d_dv__omega_D = -_d_tau_next__omega_D*delta + d_tau__omega_D*delta
         _d_dv__A_c = -_d_tau_next__A_c*delta + d_tau__A_c*delta
         _d_dv__B_s = -_d_tau_next__B_s*delta + d_tau__B_s*delta
-        _d_dv__delta = -_d_tau_next__delta*delta - _x126 + d_tau__delta*delta
+        _d_dv__delta = -_d_tau_next__delta*delta - _x124 + d_tau__delta*delta
         _d_dv__k_d = -_d_tau_next__k_d*delta + d_tau__k_d*delta
         # cos, sin, exp at the next iterate: Taylor steps when it is close
-        _x127 = -0.001388888888888889*_du**6 + (0.041666666666666664)*_du**4 - 0.5*_du**2 + 1.0
-        _x128 = _x127*cos_t
-        _x129 = (0.16666666666666666)*_du**3
-        _x130 = (0.008333333333333333)*_du**5
-        _x131 = (0.0001984126984126984)*_du**7 - _du + _x129 - _x130
-        _x132 = -_x131
-        _x133 = (abs(_du) <= 0.01) and (abs(_dv) <= 0.01)
-        _x134 = _tau_next*omega_D
-        _x135 = math.cos(_x134)
-        _cos_next = ((_x128 - _x132*sin_t) if _x133 else (_x135))
-        _x136 = -_du + _x129 - _x130
-        _x137 = _x127*sin_t
-        _pd__26 = ((_x136*cos_t - _x137) if _x133 else (0.0))
-        _x138 = math.sin(_x134)
-        _pd__27 = ((0.0) if _x133 else (-_x138*omega_D))
-        _x139 = ((_x127) if _x133 else (0.0))
-        _pd__28 = _x139
-        _pd__29 = ((_x131) if _x133 else (0.0))
+        _x125 = -0.001388888888888889*_du**6 + (0.041666666666666664)*_du**4 - 0.5*_du**2 + 1.0
+        _x126 = _x125*cos_t
+        _x127 = (0.16666666666666666)*_du**3
+        _x128 = (0.008333333333333333)*_du**5
+        _x129 = (0.0001984126984126984)*_du**7 - _du + _x127 - _x128
+        _x130 = -_x129
+        _x131 = (abs(_du) <= 0.01) and (abs(_dv) <= 0.01)
+        _x132 = _tau_next*omega_D
+        _x133 = math.cos(_x132)
+        _cos_next = ((_x126 - _x130*sin_t) if _x131 else (_x133))
+        _x134 = -_du + _x127 - _x128
+        _x135 = _x125*sin_t
+        _pd__26 = ((_x134*cos_t - _x135) if _x131 else (0.0))
+        _x136 = math.sin(_x132)
+        _pd__27 = ((0.0) if _x131 else (-_x136*omega_D))
+        _x137 = ((_x125) if _x131 else (0.0))
+        _pd__28 = _x137
+        _pd__29 = ((_x129) if _x131 else (0.0))
         _d_cos_next__a = _d_du__a*_pd__26 + _d_tau_next__a*_pd__27 + _pd__28*d_cos_t__a + _pd__29*d_sin_t__a
         _d_cos_next__omega_D = (_d_du__omega_D*_pd__26 + _d_tau_next__omega_D*_pd__27
-            + _pd__28*d_cos_t__omega_D + _pd__29*d_sin_t__omega_D + ((0.0) if _x133 else (-_tau_next*_x138)))
+            + _pd__28*d_cos_t__omega_D + _pd__29*d_sin_t__omega_D + ((0.0) if _x131 else (-_tau_next*_x136)))
         _d_cos_next__A_c = (_d_du__A_c*_pd__26 + _d_tau_next__A_c*_pd__27 + _pd__28*d_cos_t__A_c
             + _pd__29*d_sin_t__A_c)
         _d_cos_next__B_s = (_d_du__B_s*_pd__26 + _d_tau_next__B_s*_pd__27 + _pd__28*d_cos_t__B_s
@@ -417,14 +423,14 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
             + _pd__29*d_sin_t__delta)
         _d_cos_next__k_d = (_d_du__k_d*_pd__26 + _d_tau_next__k_d*_pd__27 + _pd__28*d_cos_t__k_d
             + _pd__29*d_sin_t__k_d)
-        _sin_next = ((_x132*cos_t + _x137) if _x133 else (_x138))
-        _pd__30 = ((_x128 + _x136*sin_t) if _x133 else (0.0))
-        _pd__31 = ((0.0) if _x133 else (_x135*omega_D))
-        _pd__32 = ((_x132) if _x133 else (0.0))
-        _pd__33 = _x139
+        _sin_next = ((_x130*cos_t + _x135) if _x131 else (_x136))
+        _pd__30 = ((_x126 + _x134*sin_t) if _x131 else (0.0))
+        _pd__31 = ((0.0) if _x131 else (_x133*omega_D))
+        _pd__32 = ((_x130) if _x131 else (0.0))
+        _pd__33 = _x137
         _d_sin_next__a = _d_du__a*_pd__30 + _d_tau_next__a*_pd__31 + _pd__32*d_cos_t__a + _pd__33*d_sin_t__a
         _d_sin_next__omega_D = (_d_du__omega_D*_pd__30 + _d_tau_next__omega_D*_pd__31
-            + _pd__32*d_cos_t__omega_D + _pd__33*d_sin_t__omega_D + ((0.0) if _x133 else (_tau_next*_x135)))
+            + _pd__32*d_cos_t__omega_D + _pd__33*d_sin_t__omega_D + ((0.0) if _x131 else (_tau_next*_x133)))
         _d_sin_next__A_c = (_d_du__A_c*_pd__30 + _d_tau_next__A_c*_pd__31 + _pd__32*d_cos_t__A_c
             + _pd__33*d_sin_t__A_c)
         _d_sin_next__B_s = (_d_du__B_s*_pd__30 + _d_tau_next__B_s*_pd__31 + _pd__32*d_cos_t__B_s
@@ -433,46 +439,55 @@ def damped_liftoff_jac_a_omega_D_A_c_B_s_delta_k_d(a, omega_D, A_c, B_s, delta, 
             + _pd__33*d_sin_t__delta)
         _d_sin_next__k_d = (_d_du__k_d*_pd__30 + _d_tau_next__k_d*_pd__31 + _pd__32*d_cos_t__k_d
             + _pd__33*d_sin_t__k_d)
-        _x140 = ((0.001388888888888889)*_dv**6 + (0.008333333333333333)*_dv**5 + (0.041666666666666664)*_dv**4
+        _x138 = ((0.001388888888888889)*_dv**6 + (0.008333333333333333)*_dv**5 + (0.041666666666666664)*_dv**4
             + (0.16666666666666666)*_dv**3 + (0.5)*_dv**2 + _dv + 1.0)
-        _x141 = (0.0001984126984126984)*_dv**7 + _x140
-        _x142 = math.exp(-_tau_next*delta)
-        _exp_next = ((_x141*exp_t) if _x133 else (_x142))
-        _pd__34 = ((_x140*exp_t) if _x133 else (0.0))
-        _pd__35 = ((0.0) if _x133 else (-_x142*delta))
-        _pd__36 = ((_x141) if _x133 else (0.0))
+        _x139 = (0.0001984126984126984)*_dv**7 + _x138
+        _x140 = math.exp(-_tau_next*delta)
+        _exp_next = ((_x139*exp_t) if _x131 else (_x140))
+        _pd__34 = ((_x138*exp_t) if _x131 else (0.0))
+        _pd__35 = ((0.0) if _x131 else (-_x140*delta))
+        _pd__36 = ((_x139) if _x131 else (0.0))
         _d_exp_next__a = _d_dv__a*_pd__34 + _d_tau_next__a*_pd__35 + _pd__36*d_exp_t__a
         _d_exp_next__omega_D = (_d_dv__omega_D*_pd__34 + _d_tau_next__omega_D*_pd__35
             + _pd__36*d_exp_t__omega_D)
         _d_exp_next__A_c = _d_dv__A_c*_pd__34 + _d_tau_next__A_c*_pd__35 + _pd__36*d_exp_t__A_c
         _d_exp_next__B_s = _d_dv__B_s*_pd__34 + _d_tau_next__B_s*_pd__35 + _pd__36*d_exp_t__B_s
         _d_exp_next__delta = (_d_dv__delta*_pd__34 + _d_tau_next__delta*_pd__35 + _pd__36*d_exp_t__delta
-            + ((0.0) if _x133 else (-_tau_next*_x142)))
+            + ((0.0) if _x131 else (-_tau_next*_x140)))
         _d_exp_next__k_d = _d_dv__k_d*_pd__34 + _d_tau_next__k_d*_pd__35 + _pd__36*d_exp_t__k_d
         # next values
         tau__next = _tau_next
+        _bisections__next = _bisections_next
         _lo__next = _lo_next
         _hi__next = _hi_next
         cos_t__next = _cos_next
         sin_t__next = _sin_next
         exp_t__next = _exp_next
+        _n0_13 = _d_bisections__a
+        _n0_14 = _d_bisections__omega_D
+        _n0_15 = _d_bisections__A_c
+        _n0_16 = _d_bisections__B_s
+        _n0_17 = _d_bisections__delta
+        _n0_18 = _d_bisections__k_d
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 1e-06 > 0.0 and (abs(tau__next - tau) <= 1e-06*(_half))
-        _pkn0 = (tau__next, _lo__next, _hi__next, cos_t__next, sin_t__next, exp_t__next, _d_tau_next__a,
-            _d_tau_next__omega_D, _d_tau_next__A_c, _d_tau_next__B_s, _d_tau_next__delta, _d_tau_next__k_d,
-            _d_lo_next__a, _d_lo_next__omega_D, _d_lo_next__A_c, _d_lo_next__B_s, _d_lo_next__delta,
-            _d_lo_next__k_d, _d_hi_next__a, _d_hi_next__omega_D, _d_hi_next__A_c, _d_hi_next__B_s,
-            _d_hi_next__delta, _d_hi_next__k_d, _d_cos_next__a, _d_cos_next__omega_D, _d_cos_next__A_c,
-            _d_cos_next__B_s, _d_cos_next__delta, _d_cos_next__k_d, _d_sin_next__a, _d_sin_next__omega_D,
-            _d_sin_next__A_c, _d_sin_next__B_s, _d_sin_next__delta, _d_sin_next__k_d, _d_exp_next__a,
-            _d_exp_next__omega_D, _d_exp_next__A_c, _d_exp_next__B_s, _d_exp_next__delta, _d_exp_next__k_d, )
+        _conv0 = (1e-06 > 0.0 and (abs(tau__next - tau) <= 1e-06*(_half)) and (abs(_bisections__next
+            - _bisections) <= 1e-06*(1.0)))
+        _pkn0 = (tau__next, _bisections__next, _lo__next, _hi__next, cos_t__next, sin_t__next, exp_t__next,
+            _d_tau_next__a, _d_tau_next__omega_D, _d_tau_next__A_c, _d_tau_next__B_s, _d_tau_next__delta,
+            _d_tau_next__k_d, _n0_13, _n0_14, _n0_15, _n0_16, _n0_17, _n0_18, _d_lo_next__a,
+            _d_lo_next__omega_D, _d_lo_next__A_c, _d_lo_next__B_s, _d_lo_next__delta, _d_lo_next__k_d,
+            _d_hi_next__a, _d_hi_next__omega_D, _d_hi_next__A_c, _d_hi_next__B_s, _d_hi_next__delta,
+            _d_hi_next__k_d, _d_cos_next__a, _d_cos_next__omega_D, _d_cos_next__A_c, _d_cos_next__B_s,
+            _d_cos_next__delta, _d_cos_next__k_d, _d_sin_next__a, _d_sin_next__omega_D, _d_sin_next__A_c,
+            _d_sin_next__B_s, _d_sin_next__delta, _d_sin_next__k_d, _d_exp_next__a, _d_exp_next__omega_D,
+            _d_exp_next__A_c, _d_exp_next__B_s, _d_exp_next__delta, _d_exp_next__k_d, )
         _pk0 = _pkn0
         _passes += 1.0
     # 1 where the leg force decides liftoff, 0 where q_r = q_r_lo does
-    _x143 = exp_t*sin_t
-    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x143*omega_D
-        - A_c*cos_t*delta*exp_t - B_s*_x143*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
+    _x141 = exp_t*sin_t
+    by_force = ((1.0) if (liftoff == 0.0) and (q_r_lo/l0 >= -2.0*delta*m*(-A_c*_x141*omega_D
+        - A_c*cos_t*delta*exp_t - B_s*_x141*delta + B_s*cos_t*exp_t*omega_D)/k_d + 1.0) else (0.0))
     # (internal helper: its callers check that their outputs are finite)
     store(out, (tau, cos_t, sin_t, exp_t, by_force, d_tau__a, d_tau__omega_D, d_tau__A_c, d_tau__B_s,
         d_tau__delta, d_tau__k_d, d_cos_t__a, d_cos_t__omega_D, d_cos_t__A_c, d_cos_t__B_s, d_cos_t__delta,
@@ -487,7 +502,7 @@ def geyer_damped_stance_jacobian(x, p, out):
     """Geyer et al.'s map with leg damping (damped radial oscillator per half): stance outputs and their
     derivatives with respect to the touchdown state and the stiffness.
 
-    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 65, 76.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -1149,7 +1164,7 @@ def geyer_damped_stance_jacobian(x, p, out):
             d_i_P_new2__k_d = 0.0
             d_i_P_new2__c = 0.0
         elif gravity == 1.0:
-            # eq (48) on each half at the rest length l0, as (49)
+            # eq (48) on each half at l0, as (49)
             _x126 = g_s*l0*m
             _x127 = _x126*math.sin(i_bottom_q_th)
             _x128 = _x126*math.sin(q_th_td)
@@ -1768,7 +1783,7 @@ def geyer_damped_apex_return_jacobian(x, p, out):
     """Apex-return map by Geyer et al.'s map with leg damping (damped radial oscillator per half), and its
     derivatives with respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 4, 7, 17, 18, 19, 48, 49, 52, 62, 65, 76.
+    Report equations: 4, 7, 17, 18, 19, 48, 65, 76.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.

@@ -246,8 +246,8 @@ MAPS = [{'name': 'geyer', 'title': "Geyer et al.'s approximate stance map", 'sec
     _repeated1, 'wrt': ['b_y_apex', 'b_xd_apex', 'q_th_td', 'ground', 'retraction_rate', 'k']}}, 'fixed': {}},
     {'name': 'geyer-damped', 'title':
     "Geyer et al.'s map with leg damping (damped radial oscillator per half)", 'section': '3.1', 'equations':
-    ['4', '7', '17', '18', '19', '48', '49', '52', '62', '65', '76'], 'params': ['m', 'l0', 'k_c', 'k_d',
-    'g_s', 'c'], 'options': [_repeated3, {'name': 'gravity', 'kind': 'choice', 'default': 'none', 'doc':
+    ['4', '7', '17', '18', '19', '48', '65', '76'], 'params': ['m', 'l0', 'k_c', 'k_d', 'g_s', 'c'],
+    'options': [_repeated3, {'name': 'gravity', 'kind': 'choice', 'default': 'none', 'doc':
     'virtual gravity effect on p_th per half (report section 4 on [t_td, t_b] and [t_b, t_lo], as '
     "geyer-vs's types 3-4): (48) from the torque at each half's two ends with the type's leg length; "
     'each half runs with its mean momentum, the rates with the momentum at that instant', 'choices': [{

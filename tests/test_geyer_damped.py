@@ -7,7 +7,7 @@ here, liftoff (option ``force``: the leg force k (l0 - q_r) - c q_rd falls to 0,
 first) is the root of the derived force between the bottom and half a damped period later by
 ``brentq``, and the exact flights (closed form) take the body from the apex to touchdown and from
 liftoff to the next apex: an evaluation of the derivation independent of the generated kernels (the
-IR, the code generator, the safeguarded Newton of the map's liftoff). The ground truth is
+IR, the code generator, the safeguarded Halley iteration of the map's liftoff). The ground truth is
 ``slipmaps.apex_return("exact", ...)`` with the same c.
 """
 
@@ -70,10 +70,15 @@ def damped_geyer_liftoff(p: SlipParams, height: float, speed: float, angle: floa
     args = (0.0, q_rd / p.l0, w, w0, delta, w_d, p.l0, p.g_s)
     t_b = _BOTTOM(0.0, *args)
     t_end = t_b + math.pi / w_d
-    t_lo = brentq(lambda s: _FORCE(s, *args), t_b, t_end, xtol=1e-15)
     rho_lo = p.q_r_lo / p.l0 - 1.0
-    if _RHO(t_end, *args) > rho_lo:
-        t_lo = min(t_lo, brentq(lambda s: _RHO(s, *args) - rho_lo, t_b, t_end, xtol=1e-15))
+
+    def g(s):  # below 0 until liftoff: the leg force is positive and q_r below q_r_lo
+        return max(-_FORCE(s, *args), _RHO(s, *args) - rho_lo)
+
+    # the first sign change on a fine grid after the bottom, then brentq in its cell
+    grid = np.linspace(t_b, t_end, 2001)
+    first = next(i for i, s in enumerate(grid) if g(s) >= 0.0)
+    t_lo = brentq(g, grid[first - 1], grid[first], xtol=1e-16)
     rho = _RHO(t_lo, *args)
     return (
         t_lo,
@@ -116,16 +121,45 @@ def test_geyer_damped_map_is_its_derivation(zeta):
         assert abs(got[0] - want[0]) < 1e-12 and abs(got[1] - want[1]) < 1e-12, (step, got, want)
 
 
-@pytest.mark.parametrize("zeta", [0.0, 0.05, 0.1, 0.2])
-def test_geyer_damped_liftoff_time_is_the_roots(zeta):
+#: Shallow steps (apex 2-20 mm above the touchdown height, touchdown angles 0.10-0.14 rad, 5-6 m/s)
+#: for a liftoff leg length below l0: there the leg can reach q_r_lo before its force falls to 0.
+SHALLOW = tuple(
+    (math.cos(angle) + rise, speed, angle)
+    for angle in (0.10, 0.12, 0.14)
+    for speed in (5.0, 6.0)
+    for rise in (0.002, 0.005, 0.02)
+)
+
+
+@pytest.mark.parametrize(
+    ("zeta", "q_r_lo", "steps", "bound"),
+    [
+        (0.0, 1.0, STEPS, 4e-15),
+        (0.05, 1.0, STEPS, 4e-15),
+        (0.1, 1.0, STEPS, 4e-15),
+        (0.2, 1.0, STEPS, 4e-15),
+        (0.2, 0.99, SHALLOW, 5e-14),
+    ],
+    ids=["0", "0.05", "0.1", "0.2", "0.2-short-liftoff-leg"],
+)
+def test_geyer_damped_liftoff_time_is_the_roots(zeta, q_r_lo, steps, bound):
     """The kernel's liftoff (safeguarded Halley from the frozen-decay root, Taylor steps near it)
-    lands on the derivation's root found by ``brentq`` (xtol 1e-15): stance times equal to a relative
-    1.5e-15 at most over the 45 steps (measured)."""
-    p = _ratio(zeta)
-    for step in STEPS:
+    lands on the derivation's first root, found on a fine grid and by ``brentq`` (xtol 1e-16):
+    stance times equal to a relative 1.4e-15 at most over the 45 steps (measured). On the shallow
+    steps with q_r_lo = 0.99 m, q_r = q_r_lo comes first on some (the leg force's zero on the
+    others); where it does, q_r_lo lies just below the highest leg length of the damped oscillation
+    and the root is ill-conditioned (measured 2.4e-14)."""
+    p = _ratio(zeta).with_(q_r_lo=q_r_lo)
+    by_length = 0
+    for step in steps:
         want = damped_geyer_liftoff(p, *step)[0]
-        got = slipmaps.stance("geyer-damped", p, _touchdown(p, *step))["t_stance"]
-        assert abs(got - want) <= 4e-15 * want, (step, got, want)
+        res = slipmaps.stance("geyer-damped", p, _touchdown(p, *step))
+        assert res.ok, (step, res.message)
+        got = res["t_stance"]
+        assert abs(got - want) <= bound * want, (step, got, want)
+        by_length += res["liftoff_q_r"] == q_r_lo
+    if q_r_lo < p.l0:  # both conditions decide some steps (measured: q_r_lo 2 of the 18)
+        assert 0 < by_length < len(steps), by_length
 
 
 def test_geyer_damped_at_c0_is_geyers_map():
@@ -247,7 +281,7 @@ def test_eq48_each_half_impulse_at_the_types_leg_length(gravity):
         got = (res["P_c_compression"], res["P_c_decompression"])
         scale = p.m * p.l0 * math.sqrt(p.g_s * p.l0)
         assert abs(got[0] - want[0]) < 1e-11 * scale and abs(got[1] - want[1]) < 1e-11 * scale, (got, want)
-        assert abs(got[0]) > 1e-3 * scale  # the correction is not empty
+        assert min(abs(got[0]), abs(got[1])) > 1e-3 * scale  # the correction is not empty
 
 
 def test_force_liftoff_is_the_leg_forces_zero():

@@ -28,6 +28,7 @@ An overdamped leg (delta >= omega_n in a half) has no oscillation: status OVERDA
 from __future__ import annotations
 
 from functools import cache
+from typing import NamedTuple
 
 import sympy as sp
 
@@ -192,10 +193,19 @@ def liftoff_function() -> tuple[sp.Basic, sp.Basic, sp.Basic, sp.Basic]:
     return g, dg, ddg, by_force
 
 
+class LiftoffForm(NamedTuple):
+    """A liftoff condition after the bottom as c0 + exp(-delta t) (P cos(omega_D t) + Q sin(omega_D t))
+    = 0."""
+
+    c0: sp.Basic
+    P: sp.Basic
+    Q: sp.Basic
+
+
 @cache
-def liftoff_forms() -> dict[str, tuple[sp.Basic, sp.Basic, sp.Basic]]:
-    """Each liftoff condition as c0 + exp(-delta t) (P cos(omega_D t) + Q sin(omega_D t)) = 0: its
-    (c0, P, Q); ``length`` rho = rho_lo, ``force`` rho + 2 delta rho' / omega0^2 = 0."""
+def liftoff_forms() -> dict[str, LiftoffForm]:
+    """Each liftoff condition in the form :class:`LiftoffForm`: ``length`` rho = rho_lo, ``force``
+    rho + 2 delta rho' / omega0^2 = 0 (the leg force's zero)."""
     rho_, rate, _ = radial_state()
     forms = {"length": rho_ - (q_r_lo / l0 - 1), "force": rho_ + 2 * DELTA * rate / (_K_D / m)}
     out = {}
@@ -204,25 +214,25 @@ def liftoff_forms() -> dict[str, tuple[sp.Basic, sp.Basic, sp.Basic]]:
         scaled = sp.expand((g - c0) / _EXP)
         p_, q_ = scaled.coeff(_COS), scaled.coeff(_SIN)
         assert sp.simplify(scaled - p_ * _COS - q_ * _SIN) == 0
-        out[name] = (c0, p_, q_)
+        out[name] = LiftoffForm(c0, p_, q_)
     return out
 
 
-def frozen_decay_root(form: tuple, growth: sp.Basic, w_d: sp.Basic) -> sp.Basic:
+def frozen_decay_root(form: LiftoffForm, growth: sp.Basic, w_d: sp.Basic) -> sp.Basic:
     """Near the root t of c0 + exp(-delta t) (P cos(omega_D t) + Q sin(omega_D t)) = 0: the root
     with the decay frozen at a time t_f (``growth`` = exp(delta t_f)), P cos x + Q sin x = -H
     cos(x + phi) (H = sqrt(P^2 + Q^2), tan phi = Q / -P, P < 0 after the bottom), so omega_D t =
     acos(c0 exp(delta t_f) / H) - phi (the argument clamped to [-1, 1]), with phi by its first order
     Q / -P (|phi| is of the order delta / omega_D). The root itself at delta = 0, where Q = 0."""
-    c0, p_, q_ = form
+    c0, p_, q_ = form.c0, form.P, form.Q
     z = c0 * growth / sp.sqrt(p_**2 + q_**2)
     z = sp.Piecewise((-1, z < -1), (1, z > 1), (z, True))
     return (sp.acos(z) + q_ / p_) / w_d
 
 
-#: Halley's iteration stops once a step moves the time by at most this share of half a damped
-#: period: the iterate that step took is then the root to rounding (cubic convergence; measured at
-#: most 1.5e-16 of half a period from the root at 10-20 % of the critical damping).
+#: Halley's iteration stops once a Halley step (not a bisection) moves the time by at most this share
+#: of half a damped period: the iterate that step took is then the root to rounding (cubic
+#: convergence: its error is of the order (omega_D half)^2 s^3 for a step s).
 LIFTOFF_STEP_TOL = sp.Float(1e-6)
 
 #: A step of the liftoff iteration of at most this much in omega_D t (and in delta t) moves cos,
@@ -242,7 +252,10 @@ def _advance(w_d, delta, tau, tau_next, at: tuple) -> tuple[Step, ...]:
     ev = sum(v**i / sp.factorial(i) for i in range(8))
     small = (sp.Abs(u) <= _SMALL_STEP) & (sp.Abs(v) <= _SMALL_STEP)
     return (
-        Stage(((u, w_d * (tau_next - tau)), (v, -delta * (tau_next - tau)))),
+        Stage(
+            ((u, w_d * (tau_next - tau)), (v, -delta * (tau_next - tau))),
+            comment="the step in omega_D t and in -delta t",
+        ),
         Stage(
             (
                 (
@@ -298,11 +311,14 @@ def liftoff_kernel() -> Kernel:
     at_t = {_COS: cos_t, _SIN: sin_t, _EXP: exp_t}
     g_v, g_d, g_dd, step = sym("_g"), sym("_dg"), sym("_ddg"), sym("_halley")
     lo_next, hi_next = sym("_lo_next"), sym("_hi_next")
-    # one condition's form: the force's where it decides liftoff once c > 0 (always if q_r_lo = l0:
-    # at rho = 0 the leg already pulls), the length's at c = 0 (there the first zero is rho = rho_lo)
-    forms = {name: tuple(bind(x, {}) for x in form) for name, form in liftoff_forms().items()}
-    by_force_form = LIFTOFF.is_("force") & (_DELTA > 0)
-    names = (sym("_form_c"), sym("_form_p"), sym("_form_q"))
+    halley, bisections, bisections_next = sym("_bisect"), sym("_bisections"), sym("_bisections_next")
+    # the first iterate from one condition's form: the force's where it is first (c > 0 with
+    # q_r_lo = l0: at rho = 0 the leg already pulls), else the length's (at c = 0 the first zero is
+    # rho = rho_lo; with q_r_lo < l0 and c > 0 either may be first, the length's root lies in the
+    # bracket)
+    forms = {name: LiftoffForm(*(bind(x, {}) for x in form)) for name, form in liftoff_forms().items()}
+    by_force_form = LIFTOFF.is_("force") & (_DELTA > 0) & (q_r_lo >= l0)
+    names = LiftoffForm(sym("_form_c"), sym("_form_p"), sym("_form_q"))
     chosen = tuple(
         (n, sp.Piecewise((f, by_force_form), (ln, True)))
         for n, f, ln in zip(names, forms["force"], forms["length"], strict=True)
@@ -328,7 +344,7 @@ def liftoff_kernel() -> Kernel:
                 ),
                 comment="liftoff lies in (0, pi / omega_D) after the bottom, where rho increases",
             ),
-            Stage(chosen, comment="the form of the condition that decides liftoff (c > 0: the force's)"),
+            Stage(chosen, comment="the form of the condition the first iterate solves"),
             Stage(
                 ((sym("_first"), frozen_decay_root(names, 1 / decay, w_d)),),
                 comment="the root with the decay frozen at a quarter period (the root itself at c = 0)",
@@ -343,7 +359,7 @@ def liftoff_kernel() -> Kernel:
                 comment="the first iterate, inside the bracket",
             ),
             Iterate(
-                state=((tau, sym("_tau0")),),
+                state=((tau, sym("_tau0")), (bisections, sp.S.Zero)),
                 # the bracket and cos, sin, exp at the iterate move every pass, outside the test
                 carry=(
                     (lo, sp.S.Zero, lo_next),
@@ -366,21 +382,35 @@ def liftoff_kernel() -> Kernel:
                             (lo_next, sp.Piecewise((tau, g_v < 0), (lo, True))),
                             (hi_next, sp.Piecewise((hi, g_v < 0), (tau, True))),
                             (step, tau - 2 * g_v * g_d / (2 * g_d**2 - g_v * g_dd)),
+                        ),
+                        comment="the bracket and Halley's step",
+                    ),
+                    Stage(
+                        (
+                            # g rises through its first zero: a step from where it does not, or one
+                            # leaving the bracket, bisects instead
                             (
-                                sym("_tau_next"),
+                                halley,
                                 sp.Piecewise(
-                                    (step, (step >= lo_next) & (step <= hi_next)),
-                                    ((lo_next + hi_next) / 2, True),
+                                    (0, (g_d > 0) & (step >= lo_next) & (step <= hi_next)), (1, True)
                                 ),
                             ),
-                        )
+                            (
+                                sym("_tau_next"),
+                                sp.Piecewise((step, sp.Eq(halley, 0)), ((lo_next + hi_next) / 2, True)),
+                            ),
+                            (bisections_next, bisections + halley),
+                        ),
+                        comment="Halley's step where it is safe, else bisection (counted: the loop stops "
+                        "on Halley steps only)",
                     ),
                     *_advance(w_d, _DELTA, tau, sym("_tau_next"), (cos_t, sin_t, exp_t)),
                 ),
-                update=(sym("_tau_next"),),
+                update=(sym("_tau_next"), bisections_next),
                 max_iter=sp.Integer(60),
                 tol=LIFTOFF_STEP_TOL,
-                scales=(half,),
+                # a bisection moves the count by 1: no stop there, however small the step
+                scales=(half, sp.S.One),
                 count=sym("_passes"),
                 comment="Halley's method on g, safeguarded by bisection on its bracket",
             ),
@@ -598,7 +628,7 @@ MAPS = (
         name="geyer-damped",
         title="Geyer et al.'s map with leg damping (damped radial oscillator per half)",
         section="3.1",
-        equations=("4", "7", "17", "18", "19", "48", "49", "52", "62", "65", "76"),
+        equations=("4", "7", "17", "18", "19", "48", "65", "76"),
         params=("m", "l0", "k_c", "k_d", "g_s", "c"),
         build=_build,
         options=(LIFTOFF, GRAVITY, iterations_option(100, ()), tol_option(1e-12)),

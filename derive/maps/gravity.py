@@ -85,10 +85,17 @@ def impulse(duration, samples) -> sp.Basic:
     return duration * sum(tau.subs({q_r: r, q_th: th}) for r, th in samples) / len(samples)
 
 
+def held_leg_length(kind: int, q_r_b: sp.Basic, stance_average: sp.Basic) -> sp.Basic:
+    """The leg length the torque of types 0-2 is taken at: l0 (49), (l0 + q_r_b)/2 (52), the
+    stance-average leg length ``stance_average`` (62)."""
+    return (l0, (l0 + q_r_b) / 2, stance_average)[kind]
+
+
 def half_impulses(t_b, t_s, angles, lengths) -> tuple[sp.Basic, sp.Basic]:
-    """(65) / (76) on [t_td, t_b] and [t_b, t_lo]: each half's impulse by (48) from the torque at its
-    two ends, the angles (q_th_td, q_th_b, q_th_lo) with the leg lengths ``lengths``: the true ones
-    (q_r_td, q_r_b, q_r_lo) for (65), or each half's average (L1, L1, L2, L2) for (76)."""
+    """(48) on [t_td, t_b] and [t_b, t_lo]: each half's impulse from the torque at its two ends, the
+    angles (q_th_td, q_th_b, q_th_lo) with the leg lengths ``lengths`` (touchdown, bottom, bottom,
+    liftoff): the true ones for (65), each half's average (L1, L1, L2, L2) for (76), one held
+    length (types 0-2, :func:`held_leg_length`) for each half's form of (49), (52), (62)."""
     (th_td, th_b, th_lo), (r_td, r_b1, r_b2, r_lo) = angles, lengths
     return impulse(t_b, [(r_td, th_td), (r_b1, th_b)]), impulse(t_s - t_b, [(r_b2, th_b), (r_lo, th_lo)])
 
@@ -115,10 +122,12 @@ def half_impulse_switch(
     averages_defs = ((L1, averages[0]), (L2, averages[1]))
     rules = {
         "none": lambda: (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),),
-        "type0": lambda: rule((l0,) * 4, "eq (48) on each half at the rest length l0, as (49)"),
-        "type1": lambda: rule(((l0 + q_r_b) / 2,) * 4, "eq (48) on each half at (l0 + q_r_b)/2, as (52)"),
+        "type0": lambda: rule((held_leg_length(0, q_r_b, L),) * 4, "eq (48) on each half at l0, as (49)"),
+        "type1": lambda: rule(
+            (held_leg_length(1, q_r_b, L),) * 4, "eq (48) on each half at (l0 + q_r_b)/2, as (52)"
+        ),
         "type2": lambda: rule(
-            (L,) * 4,
+            (held_leg_length(2, q_r_b, L),) * 4,
             f"eq (48) on each half at the stance-average leg length of {source}, as (62)",
             (*averages_defs, (L, (t_b * L1 + (t_s - t_b) * L2) / t_s)),
         ),
@@ -359,12 +368,10 @@ def _impulse_steps(kind: int, inp: MapInputs, prefix: str) -> tuple[Step, ...]:
         )
         return Switch(inp.opt("leg_length"), cases, comment="average leg length, eqs (55)-(61) / (67)-(75)")
 
-    if kind == 0:
-        return (by_samples(l0),)
-    if kind == 1:
-        return (by_samples((l0 + q_r_b) / 2),)
+    if kind in (0, 1):
+        return (by_samples(held_leg_length(kind, q_r_b, L)),)
     if kind == 2:
-        return (by_leg_length(0, t_s, L), by_samples(L))
+        return (by_leg_length(0, t_s, L), by_samples(held_leg_length(kind, q_r_b, L)))
     halves = inp.options["interval"].code("halves")
     whole = inp.options["interval"].code("stance")
     if kind == 3:  # (65) on [t_td, t_lo] or on [t_td, t_b] + [t_b, t_lo]
