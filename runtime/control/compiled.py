@@ -887,6 +887,14 @@ class Solver:
             **fields,
         )
 
+    def run_one(self, x, p, t, settings) -> np.ndarray:
+        """One solve, here (a scalar plan: no blocks, no threads): the row (:attr:`width`) from the
+        inputs ``x`` (1, len(x)), one parameter record ``p`` (1, len(p)) and the targets ``t``
+        (1, 2)."""
+        out = np.empty((1, self.width))
+        self._rows(x, p, t, settings, out)
+        return out[0]
+
     def run(self, X, P, T, settings) -> np.ndarray:
         """Solve every row: inputs ``X`` (n, len(x)), parameter records ``P`` (1 or n rows),
         targets ``T`` (n, 2): the rows (n, :attr:`width`)."""

@@ -719,6 +719,17 @@ class Deadbeat:
                 X[:, j] = np.clip(X[:, j], lo, hi)
         return X
 
+    def _input_row(self, values: dict) -> np.ndarray:
+        """:meth:`_inputs` of one row (1, len(x)) from Python floats, without array passes."""
+        x = self._x.copy()
+        for key, j in self._at.items():
+            if key in values:
+                x[j] = values[key]
+        for (in_p, j), lo, hi in self._clip:
+            if not in_p:
+                x[j] = min(max(x[j], lo), hi)
+        return x[None, :]
+
     def plan(
         self,
         apex_height,
@@ -758,9 +769,9 @@ class Deadbeat:
             leg_angle("touchdown_angle", th)
         p = self._record if k_c is None and k_d is None and k is None else self._record_with(k_c, k_d, k)
         given = {"apex_height": h, "apex_speed": v, "ground": gr, "touchdown_angle": th}
-        X = self._inputs(given | {"retraction_rate": rate}, 1)
+        x = self._input_row(given | {"retraction_rate": rate})
         T = np.array([[H if tgt[0] else 0.0, V if tgt[1] else 0.0]])
-        out = self.solver.run(X, p[None, :], T, self._settings[tgt])[0]
+        out = self.solver.run_one(x, p[None, :], T, self._settings[tgt])
         return DeadbeatResult(self, out, p, (h, v, gr, rate), (H, V), th)
 
     def plan_batch(
